@@ -1,0 +1,224 @@
+#ifndef rollnip_parameters_h
+#define rollnip_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <rollnip/boundary_ids.h>
+#include <rollnip/global.h>
+
+#include <array>
+#include <string>
+
+/**
+ * The run-time parameters of rollnip, one struct per subsection of the .prm
+ * file, each with its own declare/parse pair (implemented in
+ * source/parameters.cc). Lengths are in mm, stresses in MPa, angles in degrees
+ * in the file and radians in the program.
+ */
+namespace rollnip
+{
+  namespace Parameters
+  {
+    struct Geometry
+    {
+      double inner_radius; ///< R1 [mm]
+      double outer_radius; ///< R0 [mm]
+      double sector_angle; ///< modelled sector [rad], in (0, pi]
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
+    enum class MeshSource
+    {
+      builtin,
+      gmsh
+    };
+
+    struct Mesh
+    {
+      MeshSource   source;
+      std::string  mesh_file;
+      unsigned int radial_cells;
+      unsigned int circumferential_cells;
+      /// Ratio of the widest to the narrowest coarse cell in theta (>= 1);
+      /// the narrowest cells sit at theta = 0, the nip.
+      double circumferential_grading;
+      /// Ratio of the outermost to the innermost coarse cell in r; < 1 makes
+      /// cells thinner towards the loaded surface.
+      double       radial_grading;
+      unsigned int global_refinements;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
+    enum class Theory
+    {
+      nonlinear,
+      linear
+    };
+
+    enum class Element
+    {
+      q1_p0,
+      q2_p1
+    };
+
+    struct Material
+    {
+      double C1; ///< [MPa]
+      double C2; ///< [MPa]
+      Theory theory;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
+    struct Discretization
+    {
+      Element element;
+
+      unsigned int
+      displacement_degree() const
+      {
+        return element == Element::q1_p0 ? 1 : 2;
+      }
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
+    /// What happens on one boundary id (doc/intro.md, section 1).
+    enum class BoundaryCondition
+    {
+      fixed,    ///< u = 0 (bonded)
+      free,     ///< zero traction
+      symmetry, ///< zero normal displacement and zero shear traction
+      pressure  ///< follower pressure given by Load/Pressure function
+    };
+
+    struct BoundaryConditions
+    {
+      std::array<BoundaryCondition, BoundaryIds::n_boundaries> condition;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
+    struct Load
+    {
+      std::string pressure_function;
+      double      p0;     ///< [MPa], a constant usable in the expression
+      double      theta0; ///< [rad], a constant usable in the expression
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
+    struct LoadStepping
+    {
+      unsigned int n_initial_steps;
+      double       growth_factor;
+      unsigned int fast_newton_iterations;
+      unsigned int max_cutbacks;
+      double       min_increment;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
+    struct NonlinearSolver
+    {
+      unsigned int max_iterations;
+      double       residual_tolerance;
+      double       increment_tolerance;
+      double       constraint_tolerance;
+      bool         line_search;
+      unsigned int max_line_search_steps;
+      bool         verbose;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
+    struct LinearSolver
+    {
+      std::string direct_solver; ///< an Amesos solver name
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
+    struct Output
+    {
+      std::string directory;
+      bool        write_vtu;
+      bool        vtu_every_step;
+      bool        write_csv;
+      bool        print_timing;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
+    /// All parameters of a run, one member per subsection.
+    struct AllParameters
+    {
+      Geometry           geometry;
+      Mesh               mesh;
+      Material           material;
+      Discretization     discretization;
+      BoundaryConditions boundary_conditions;
+      Load               load;
+      LoadStepping       load_stepping;
+      NonlinearSolver    nonlinear_solver;
+      LinearSolver       linear_solver;
+      Output             output;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+
+      /// Reads a .prm file; throws with a one-line message on any error:
+      /// unknown entries, values out of range, inconsistent geometry.
+      void
+      read(const std::string &filename);
+
+      /**
+       * Checks what the patterns of ParameterHandler cannot: relations
+       * between entries (R1 < R0, ...), that the load expression parses, and
+       * that the conditions make sense. Throws ExcMessage naming the entry.
+       */
+      void
+      validate() const;
+    };
+
+    /// Human-readable name of a condition, as written in the .prm file.
+    std::string
+    to_string(BoundaryCondition condition);
+  } // namespace Parameters
+} // namespace rollnip
+
+#endif

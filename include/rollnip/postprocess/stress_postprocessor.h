@@ -1,0 +1,37 @@
+#ifndef rollnip_postprocess_stress_postprocessor_h
+#define rollnip_postprocess_stress_postprocessor_h
+
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <rollnip/material/mooney_rivlin.h>
+
+namespace rollnip
+{
+  /**
+   * The derived fields of the VTU output: Cauchy stress (Cartesian, polar
+   * about the roll axis in the current configuration, and zz), J, the
+   * in-plane principal stretches and nominal strains, von Mises and the
+   * hydrostatic pressure -tr(sigma)/3. Evaluated from the solution, point by
+   * point, with evaluate_stress_state().
+   */
+  class StressPostprocessor : public DataPostprocessor<dim>
+  {
+  public:
+    explicit StressPostprocessor(const MooneyRivlin &material);
+
+    void
+    evaluate_vector_field(const DataPostprocessorInputs::Vector<dim> &inputs,
+                          std::vector<Vector<double>> &computed) const override;
+
+    std::vector<std::string>
+    get_names() const override;
+
+    UpdateFlags
+    get_needed_update_flags() const override;
+
+  private:
+    const MooneyRivlin &material;
+  };
+} // namespace rollnip
+
+#endif

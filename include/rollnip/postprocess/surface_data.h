@@ -1,0 +1,52 @@
+#ifndef rollnip_postprocess_surface_data_h
+#define rollnip_postprocess_surface_data_h
+
+#include <rollnip/global.h>
+
+#include <vector>
+
+namespace rollnip
+{
+  /// One node of the outer surface r = R0 (all lengths mm, stresses MPa).
+  struct OuterSurfacePoint
+  {
+    double theta; ///< reference angle [rad]
+    double X, Y;  ///< reference position
+    double x, y;  ///< deformed position
+    double u_r, u_theta;
+    double applied_pressure; ///< the load f(theta) times the load fraction
+    /// -sigma_nn on the deformed surface, from the adjacent cells' stress.
+    double normal_pressure;
+    double shear_traction; ///< sigma_nt from the adjacent cells' stress
+  };
+
+  /// One node of the bond surface r = R1.
+  struct BondSurfacePoint
+  {
+    double theta; ///< reference angle [rad]
+    double sigma_rr, sigma_rtheta, sigma_thetatheta;
+  };
+
+  /// Cell-wide extremes over the whole cover.
+  struct FieldExtremes
+  {
+    double min_J                 = 1;
+    double max_abs_J_minus_1     = 0;
+    double max_principal_stretch = 1;
+    double min_principal_stretch = 1;
+    double max_von_mises         = 0; ///< plane-strain von Mises [MPa]
+    double min_sigma_rr = 0, max_sigma_rr = 0;
+    double max_abs_sigma_rtheta = 0;
+  };
+
+  /// Everything postprocess.cc extracts of one state, gathered on rank 0
+  /// (other ranks hold empty vectors but the same extremes).
+  struct SurfaceData
+  {
+    std::vector<OuterSurfacePoint> outer;
+    std::vector<BondSurfacePoint>  bond;
+    FieldExtremes                  extremes;
+  };
+} // namespace rollnip
+
+#endif

@@ -1,0 +1,232 @@
+#ifndef rollnip_problem_h
+#define rollnip_problem_h
+
+#include <deal.II/base/timer.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <rollnip/global.h>
+#include <rollnip/material/mooney_rivlin.h>
+#include <rollnip/parameters.h>
+#include <rollnip/postprocess/surface_data.h>
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace rollnip
+{
+  /// One Newton iteration, as logged (doc/intro.md, section 5).
+  struct NewtonRecord
+  {
+    unsigned int step;
+    unsigned int iteration;
+    double       load_fraction;
+    double       residual;   ///< |R_u| / |F_ext|
+    double       constraint; ///< sum |integral (J - 1)| / |Omega|
+    double       increment;  ///< |du| / |u|
+    double       step_length;
+  };
+
+  /// One converged load step.
+  struct StepRecord
+  {
+    unsigned int step;
+    double       load_fraction;
+    unsigned int newton_iterations;
+    double       residual;
+    double       nip_load;   ///< P [N/mm]
+    double       u_r_centre; ///< [mm]
+    double       wall_time;  ///< [s] since the start of the solve
+  };
+
+  /// How a run ended.
+  struct RunStatus
+  {
+    bool        converged     = false;
+    double      load_fraction = 0; ///< the last converged load fraction
+    std::string message;           ///< why it stopped, if it did not converge
+  };
+
+  /**
+   * The finite-strain cover problem: mesh, Q1-P0 (or Q2-P1) mixed system,
+   * follower pressure, Newton with load stepping, and output. One object
+   * per run. Implemented by concern:
+   *  - source/problem/setup.cc: constructor, setup()
+   *  - source/problem/assembly.cc: assemble()
+   *  - source/problem/newton.cc: run(), solve_load_step(), the linear solve
+   *  - source/problem/postprocess.cc: surface data and scalars
+   *  - source/problem/output.cc: VTU/PVD, CSV and summary files
+   */
+  class RollProblem
+  {
+  public:
+    RollProblem(const Parameters::AllParameters &parameters,
+                const MPI_Comm                   mpi_communicator);
+    ~RollProblem();
+
+    /// Mesh, DoFs, constraints, sparsity (setup.cc).
+    void
+    setup();
+
+    /// Ramps the load from 0 to 1 with adaptive steps; writes output for
+    /// converged steps; never throws for a load it cannot reach but
+    /// reports it in the status (newton.cc).
+    RunStatus
+    run();
+
+    /**
+     * Replaces the follower pressure f(Theta) [MPa] of Load/Pressure
+     * function by @p pressure (full load, scaled by the load fraction).
+     * This is how the contact iteration drives the solver.
+     */
+    void
+    set_pressure(std::function<double(double)> pressure);
+
+    /**
+     * Assembles the residual R(u, q; load fraction) of the current solution
+     * and, if asked, the consistent tangent (assembly.cc). Returns the
+     * smallest J at a quadrature point (<= 0 flags an inverted cell).
+     */
+    double
+    assemble(const double load_fraction, const bool with_matrix);
+
+    /// Outer and bond surface values of the current state (postprocess.cc).
+    SurfaceData
+    surface_data(const double load_fraction) const;
+
+    /// Resultant of the applied surface load on the model [N/mm].
+    Tensor<1, dim>
+    load_resultant(const double load_fraction) const;
+
+    /// Radial displacement of the surface point (R0, 0) [mm].
+    double
+    radial_displacement_on_line_of_centres() const;
+
+    /// Writes VTU (and the PVD record) for the current state (output.cc).
+    void
+    write_vtu(const unsigned int step, const double load_fraction);
+
+    /// Writes the CSV files and summary.txt for the current state.
+    void
+    write_results(const RunStatus &status);
+
+    // Read access for tests and drivers.
+    const std::vector<NewtonRecord> &
+    newton_log() const
+    {
+      return newton_records;
+    }
+    const std::vector<StepRecord> &
+    step_log() const
+    {
+      return step_records;
+    }
+    const TrilinosWrappers::MPI::Vector &
+    current_solution() const
+    {
+      return locally_relevant_solution;
+    }
+    /// Sets the state (owned entries) and updates ghosts.
+    void
+    set_solution(const TrilinosWrappers::MPI::Vector &owned);
+    const TrilinosWrappers::MPI::Vector &
+    residual() const
+    {
+      return system_rhs;
+    }
+    const TrilinosWrappers::SparseMatrix &
+    tangent() const
+    {
+      return system_matrix;
+    }
+    const IndexSet &
+    locally_owned() const
+    {
+      return locally_owned_dofs;
+    }
+    const AffineConstraints<double> &
+    constraints_object() const
+    {
+      return constraints;
+    }
+    types::global_dof_index
+    n_dofs() const
+    {
+      return dof_handler.n_dofs();
+    }
+    unsigned int
+    n_cells() const
+    {
+      return triangulation.n_global_active_cells();
+    }
+    const DoFHandler<dim> &
+    dofs() const
+    {
+      return dof_handler;
+    }
+
+  private:
+    // newton.cc
+    bool
+    solve_load_step(const double load_fraction, const unsigned int step);
+    void
+    solve_linear_system(TrilinosWrappers::MPI::Vector &newton_update);
+    double
+    pressure_part_norm(const TrilinosWrappers::MPI::Vector &v) const;
+
+    // setup.cc
+    void
+    make_constraints();
+
+    // output.cc
+    void
+    write_csv(const SurfaceData &data) const;
+    void
+    write_summary(const RunStatus &status, const SurfaceData &data) const;
+
+    const Parameters::AllParameters &parameters;
+    MPI_Comm                         mpi_communicator;
+    ConditionalOStream               pcout;
+    mutable TimerOutput              timer;
+    Timer                            wall_clock;
+
+    parallel::distributed::Triangulation<dim> triangulation;
+    const MooneyRivlin                        material;
+    std::function<double(double)>             pressure;
+
+    std::unique_ptr<MappingQ<dim>> mapping;
+    std::unique_ptr<FESystem<dim>> fe;
+    DoFHandler<dim>                dof_handler;
+    IndexSet                       locally_owned_dofs;
+    IndexSet                       locally_relevant_dofs;
+    IndexSet                       pressure_dofs; ///< owned pressure DoFs
+    AffineConstraints<double>      constraints;
+
+    TrilinosWrappers::SparseMatrix system_matrix;
+    TrilinosWrappers::MPI::Vector  solution; ///< owned entries
+    TrilinosWrappers::MPI::Vector  locally_relevant_solution;
+    TrilinosWrappers::MPI::Vector  system_rhs;     ///< residual R
+    TrilinosWrappers::MPI::Vector  external_force; ///< surface load part
+
+    double domain_area = 0;
+
+    std::vector<NewtonRecord>                   newton_records;
+    std::vector<StepRecord>                     step_records;
+    std::vector<std::pair<double, std::string>> pvd_records;
+    unsigned int                                n_assemblies    = 0;
+    unsigned int                                n_linear_solves = 0;
+    unsigned int                                n_cutbacks      = 0;
+  };
+} // namespace rollnip
+
+#endif

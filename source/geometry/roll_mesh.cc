@@ -1,0 +1,163 @@
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
+#include <deal.II/grid/tria.h>
+
+#include <rollnip/boundary_ids.h>
+#include <rollnip/geometry/roll_mesh.h>
+
+#include <cmath>
+#include <fstream>
+#include <set>
+
+namespace rollnip
+{
+  std::vector<double>
+  graded_steps(const unsigned int n, const double length, const double ratio)
+  {
+    // Widths w_k = w_0 g^k with g^(n-1) = ratio, scaled to sum to length.
+    const double        g = (n > 1) ? std::pow(ratio, 1. / (n - 1)) : 1.;
+    std::vector<double> steps(n);
+    double              sum = 0;
+    for (unsigned int k = 0; k < n; ++k)
+      sum += (steps[k] = std::pow(g, k));
+    for (double &s : steps)
+      s *= length / sum;
+    return steps;
+  }
+
+  namespace
+  {
+    /// The sector annulus: a graded rectangle in (r, theta), mapped to
+    /// Cartesian coordinates. Left/right/bottom/top of the rectangle
+    /// (colorize ids 0..3) are exactly r = R1, r = R0, theta = 0 and
+    /// theta = sector angle, i.e. the ids of boundary_ids.h.
+    void
+    make_builtin(const Parameters::AllParameters &parameters,
+                 Triangulation<dim>              &coarse)
+    {
+      const auto                            &g     = parameters.geometry;
+      const auto                            &m     = parameters.mesh;
+      const std::vector<std::vector<double>> steps = {
+        graded_steps(m.radial_cells,
+                     g.outer_radius - g.inner_radius,
+                     m.radial_grading),
+        graded_steps(m.circumferential_cells,
+                     g.sector_angle,
+                     m.circumferential_grading)};
+      GridGenerator::subdivided_hyper_rectangle(coarse,
+                                                steps,
+                                                Point<dim>(g.inner_radius, 0.),
+                                                Point<dim>(g.outer_radius,
+                                                           g.sector_angle),
+                                                /*colorize=*/true);
+      static_assert(BoundaryIds::inner_arc == 0 &&
+                      BoundaryIds::outer_arc == 1 &&
+                      BoundaryIds::symmetry_edge == 2 &&
+                      BoundaryIds::far_edge == 3,
+                    "colorize numbering must match boundary_ids.h");
+      GridTools::transform(
+        [](const Point<dim> &p) {
+          return Point<dim>(p[0] * std::cos(p[1]), p[0] * std::sin(p[1]));
+        },
+        coarse);
+      coarse.set_all_manifold_ids(ManifoldIds::polar);
+    }
+
+    void
+    make_from_gmsh(const Parameters::AllParameters &parameters,
+                   Triangulation<dim>              &coarse)
+    {
+      const std::string &file = parameters.mesh.mesh_file;
+      std::ifstream      in(file);
+      AssertThrow(in.good(),
+                  ExcMessage("Mesh/Mesh file: cannot open '" + file + "'"));
+      GridIn<dim> grid_in;
+      grid_in.attach_triangulation(coarse);
+      try
+        {
+          grid_in.read_msh(in);
+        }
+      catch (...)
+        {
+          AssertThrow(false,
+                      ExcMessage(
+                        "Mesh/Mesh file: '" + file +
+                        "' is not a readable gmsh quadrilateral mesh"));
+        }
+      // Arcs follow the circles under refinement; the interior stays flat.
+      for (const auto &cell : coarse.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() &&
+              (face->boundary_id() == BoundaryIds::inner_arc ||
+               face->boundary_id() == BoundaryIds::outer_arc))
+            face->set_manifold_id(ManifoldIds::polar);
+    }
+
+    /// The mesh must carry exactly the ids 0..3 and its arcs must lie on
+    /// the circles of Geometry.
+    void
+    check_mesh(const Parameters::AllParameters &parameters,
+               const Triangulation<dim>        &coarse,
+               const std::string               &origin)
+    {
+      std::set<types::boundary_id> found;
+      const double                 R[2]  = {parameters.geometry.inner_radius,
+                                            parameters.geometry.outer_radius};
+      double                       worst = 0;
+      for (const auto &cell : coarse.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            {
+              const types::boundary_id b = face->boundary_id();
+              AssertThrow(b < BoundaryIds::n_boundaries,
+                          ExcMessage(origin + ": boundary id " +
+                                     std::to_string(b) +
+                                     " is not one of 0 (inner arc), 1 (outer "
+                                     "arc), 2 (symmetry edge), 3 (far edge)"));
+              found.insert(b);
+              if (b == BoundaryIds::inner_arc || b == BoundaryIds::outer_arc)
+                for (unsigned int v = 0; v < 2; ++v)
+                  worst =
+                    std::max(worst,
+                             std::abs(face->vertex(v).norm() - R[b]) / R[b]);
+            }
+      for (types::boundary_id b = 0; b < BoundaryIds::n_boundaries; ++b)
+        AssertThrow(found.count(b),
+                    ExcMessage(origin + ": the mesh has no boundary with id " +
+                               std::to_string(b) +
+                               " (0 inner arc, 1 outer arc, 2 symmetry edge, "
+                               "3 far edge)"));
+      AssertThrow(worst < 1e-6,
+                  ExcMessage(origin +
+                             ": the arcs with ids 0 and 1 do not lie on "
+                             "Geometry/Inner radius and Outer radius (relative "
+                             "mismatch " +
+                             std::to_string(worst) + ")"));
+    }
+  } // namespace
+
+  void
+  make_roll_mesh(const Parameters::AllParameters           &parameters,
+                 parallel::distributed::Triangulation<dim> &triangulation)
+  {
+    Triangulation<dim> coarse;
+    if (parameters.mesh.source == Parameters::MeshSource::gmsh)
+      {
+        make_from_gmsh(parameters, coarse);
+        check_mesh(parameters,
+                   coarse,
+                   "Mesh/Mesh file '" + parameters.mesh.mesh_file + "'");
+      }
+    else
+      {
+        make_builtin(parameters, coarse);
+        check_mesh(parameters, coarse, "built-in mesh");
+      }
+    triangulation.copy_triangulation(coarse);
+    triangulation.set_manifold(ManifoldIds::polar,
+                               PolarManifold<dim>(Point<dim>()));
+    triangulation.refine_global(parameters.mesh.global_refinements);
+  }
+} // namespace rollnip

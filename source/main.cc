@@ -1,0 +1,113 @@
+#include <deal.II/base/mpi.h>
+
+#include <rollnip/parameters.h>
+#include <rollnip/problem.h>
+#include <rollnip/run_errors.h>
+
+#include <iostream>
+#include <string>
+
+namespace
+{
+  const char *const usage =
+    "Usage: rollnip [options] FILE.prm\n"
+    "\n"
+    "Computes the deformation and stresses of a rubber roll cover bonded to a\n"
+    "rigid core under a follower pressure (plane strain, incompressible\n"
+    "Mooney-Rivlin, Q1-P0 finite elements); see README.md.\n"
+    "\n"
+    "Options:\n"
+    "  -h, --help              this text\n"
+    "  --print-parameters      write every parameter with its default, range\n"
+    "                          and documentation in .prm form, then exit\n"
+    "  --validate              read and check FILE.prm and the mesh, then "
+    "exit\n"
+    "\n"
+    "Run in parallel with: mpirun -np N rollnip FILE.prm\n"
+    "Exit status: 0 when the full load was reached, 1 on bad input or when\n"
+    "the run stopped early (the last converged state is written).\n";
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  using namespace rollnip;
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+
+  std::string file;
+  bool        validate_only = false;
+  for (int i = 1; i < argc; ++i)
+    {
+      const std::string arg = argv[i];
+      if (arg == "-h" || arg == "--help")
+        {
+          if (root)
+            std::cout << usage;
+          return 0;
+        }
+      else if (arg == "--print-parameters")
+        {
+          if (root)
+            {
+              ParameterHandler prm;
+              Parameters::AllParameters::declare(prm);
+              prm.print_parameters(std::cout,
+                                   ParameterHandler::PRM |
+                                     ParameterHandler::KeepDeclarationOrder);
+            }
+          return 0;
+        }
+      else if (arg == "--validate")
+        validate_only = true;
+      else if (!arg.empty() && arg[0] == '-')
+        {
+          if (root)
+            std::cerr << "rollnip: error: unknown option '" << arg
+                      << "' (see rollnip --help)" << std::endl;
+          return 1;
+        }
+      else if (file.empty())
+        file = arg;
+      else
+        {
+          if (root)
+            std::cerr << "rollnip: error: more than one parameter file given "
+                         "(see rollnip --help)"
+                      << std::endl;
+          return 1;
+        }
+    }
+  if (file.empty())
+    {
+      if (root)
+        std::cerr << "rollnip: error: no parameter file given (see rollnip "
+                     "--help)"
+                  << std::endl;
+      return 1;
+    }
+
+  return run_guarded(root, [&]() {
+    Parameters::AllParameters parameters;
+    parameters.read(file);
+    RollProblem problem(parameters, MPI_COMM_WORLD);
+    problem.setup();
+    if (validate_only)
+      {
+        if (root)
+          std::cout << "rollnip: '" << file << "' is valid" << std::endl;
+        return 0;
+      }
+    const RunStatus status = problem.run();
+    problem.write_results(status);
+    if (!status.converged)
+      {
+        if (root)
+          std::cerr << "rollnip: error: " << status.message
+                    << "; results of that state are in '"
+                    << parameters.output.directory << "'" << std::endl;
+        return 1;
+      }
+    return 0;
+  });
+}

@@ -1,0 +1,555 @@
+#include <deal.II/base/numbers.h>
+
+#include <rollnip/loading/pressure_load.h>
+#include <rollnip/parameters.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace rollnip
+{
+  namespace Parameters
+  {
+    namespace
+    {
+      const char *const boundary_names[BoundaryIds::n_boundaries] = {
+        "Inner arc (id 0)",
+        "Outer arc (id 1)",
+        "Symmetry edge (id 2)",
+        "Far edge (id 3)"};
+
+      BoundaryCondition
+      condition_from_string(const std::string &s)
+      {
+        if (s == "fixed")
+          return BoundaryCondition::fixed;
+        if (s == "free")
+          return BoundaryCondition::free;
+        if (s == "symmetry")
+          return BoundaryCondition::symmetry;
+        return BoundaryCondition::pressure;
+      }
+
+      /// Declares an entry whose documentation ends with its allowed values,
+      /// so that --print-parameters shows the range of every entry.
+      void
+      declare_documented(ParameterHandler            &prm,
+                         const std::string           &name,
+                         const std::string           &default_value,
+                         const Patterns::PatternBase &pattern,
+                         const std::string           &doc)
+      {
+        prm.declare_entry(name,
+                          default_value,
+                          pattern,
+                          doc + ". Allowed: " +
+                            pattern.description(Patterns::PatternBase::Text));
+      }
+
+      constexpr double degree = numbers::PI / 180.;
+    } // namespace
+
+    std::string
+    to_string(const BoundaryCondition condition)
+    {
+      switch (condition)
+        {
+          case BoundaryCondition::fixed:
+            return "fixed";
+          case BoundaryCondition::free:
+            return "free";
+          case BoundaryCondition::symmetry:
+            return "symmetry";
+          default:
+            return "pressure";
+        }
+    }
+
+    void
+    Geometry::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometry");
+      declare_documented(prm,
+                         "Inner radius",
+                         "47.2",
+                         Patterns::Double(0.),
+                         "R1: radius of the rigid core = inner radius of the "
+                         "cover, the bond surface [mm]");
+      declare_documented(prm,
+                         "Outer radius",
+                         "60.7",
+                         Patterns::Double(0.),
+                         "R0: outer radius of the undeformed cover [mm]");
+      declare_documented(prm,
+                         "Sector angle",
+                         "90",
+                         Patterns::Double(),
+                         "Angle of the modelled sector, measured from the line "
+                         "of centres, in (0, 180] [deg]");
+      prm.leave_subsection();
+    }
+
+    void
+    Geometry::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometry");
+      inner_radius = prm.get_double("Inner radius");
+      outer_radius = prm.get_double("Outer radius");
+      sector_angle = prm.get_double("Sector angle") * degree;
+      prm.leave_subsection();
+    }
+
+    void
+    Mesh::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Mesh");
+      declare_documented(prm,
+                         "Source",
+                         "builtin",
+                         Patterns::Selection("builtin|gmsh"),
+                         "builtin: a structured sector annulus; gmsh: read "
+                         "'Mesh file' (physical curve tags = boundary ids)");
+      declare_documented(prm,
+                         "Mesh file",
+                         "",
+                         Patterns::Anything(),
+                         "A gmsh .msh file (format 2 or 4), used when Source = "
+                         "gmsh; relative paths are taken from the working "
+                         "directory");
+      declare_documented(prm,
+                         "Radial cells",
+                         "4",
+                         Patterns::Integer(1),
+                         "Coarse cells through the cover thickness");
+      declare_documented(prm,
+                         "Circumferential cells",
+                         "16",
+                         Patterns::Integer(1),
+                         "Coarse cells along the sector");
+      declare_documented(prm,
+                         "Circumferential grading",
+                         "8",
+                         Patterns::Double(1.),
+                         "Width of the widest coarse cell (at the far edge) "
+                         "over the narrowest (at theta = 0, the nip); 1 is "
+                         "uniform");
+      declare_documented(prm,
+                         "Radial grading",
+                         "1",
+                         Patterns::Double(0.),
+                         "Thickness of the outermost coarse cell over the "
+                         "innermost; below 1 refines towards the surface");
+      declare_documented(prm,
+                         "Global refinements",
+                         "1",
+                         Patterns::Integer(0, 12),
+                         "Uniform refinements of the coarse mesh");
+      prm.leave_subsection();
+    }
+
+    void
+    Mesh::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Mesh");
+      source =
+        prm.get("Source") == "gmsh" ? MeshSource::gmsh : MeshSource::builtin;
+      mesh_file               = prm.get("Mesh file");
+      radial_cells            = prm.get_integer("Radial cells");
+      circumferential_cells   = prm.get_integer("Circumferential cells");
+      circumferential_grading = prm.get_double("Circumferential grading");
+      radial_grading          = prm.get_double("Radial grading");
+      global_refinements      = prm.get_integer("Global refinements");
+      prm.leave_subsection();
+    }
+
+    void
+    Material::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Material");
+      declare_documented(prm,
+                         "C1",
+                         "0.25",
+                         Patterns::Double(),
+                         "Mooney-Rivlin constant C1 [MPa]");
+      declare_documented(prm,
+                         "C2",
+                         "0.25",
+                         Patterns::Double(),
+                         "Mooney-Rivlin constant C2 [MPa]; in-plane results "
+                         "depend on C1 + C2 only");
+      declare_documented(prm,
+                         "Theory",
+                         "nonlinear",
+                         Patterns::Selection("nonlinear|linear"),
+                         "nonlinear: finite strain, follower load, load "
+                         "stepping; linear: small strain with shear modulus "
+                         "G = 2 (C1 + C2), whole load in one step on the "
+                         "undeformed surface");
+      prm.leave_subsection();
+    }
+
+    void
+    Material::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Material");
+      C1 = prm.get_double("C1");
+      C2 = prm.get_double("C2");
+      theory =
+        prm.get("Theory") == "linear" ? Theory::linear : Theory::nonlinear;
+      prm.leave_subsection();
+    }
+
+    void
+    Discretization::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Discretization");
+      declare_documented(prm,
+                         "Element",
+                         "Q1-P0",
+                         Patterns::Selection("Q1-P0|Q2-P1"),
+                         "Q1-P0: bilinear displacement, cellwise constant "
+                         "pressure (the paper's element); Q2-P1: biquadratic "
+                         "displacement, discontinuous linear pressure "
+                         "(inf-sup stable)");
+      prm.leave_subsection();
+    }
+
+    void
+    Discretization::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Discretization");
+      element = prm.get("Element") == "Q2-P1" ? Element::q2_p1 : Element::q1_p0;
+      prm.leave_subsection();
+    }
+
+    void
+    BoundaryConditions::declare(ParameterHandler &prm)
+    {
+      const char *defaults[BoundaryIds::n_boundaries] = {"fixed",
+                                                         "pressure",
+                                                         "symmetry",
+                                                         "free"};
+      prm.enter_subsection("Boundary conditions");
+      for (unsigned int b = 0; b < BoundaryIds::n_boundaries; ++b)
+        declare_documented(prm,
+                           boundary_names[b],
+                           defaults[b],
+                           Patterns::Selection("fixed|free|symmetry|pressure"),
+                           "fixed: u = 0; free: no traction; symmetry: no "
+                           "normal displacement, no shear traction; pressure: "
+                           "follower pressure of Load/Pressure function");
+      prm.leave_subsection();
+    }
+
+    void
+    BoundaryConditions::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Boundary conditions");
+      for (unsigned int b = 0; b < BoundaryIds::n_boundaries; ++b)
+        condition[b] = condition_from_string(prm.get(boundary_names[b]));
+      prm.leave_subsection();
+    }
+
+    void
+    Load::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Load");
+      declare_documented(
+        prm,
+        "Pressure function",
+        "theta < theta0 ? p0 * (1 - (theta/theta0)^2) : 0",
+        Patterns::Anything(),
+        "Follower pressure f [MPa] on every boundary whose "
+        "condition is 'pressure', a muparser expression in "
+        "the REFERENCE angle theta [rad] of the surface point; "
+        "constants p0, theta0 [rad], R0, R1 [mm] and pi may be "
+        "used. Positive f pushes into the body.");
+      declare_documented(
+        prm,
+        "p0",
+        "0.1",
+        Patterns::Double(),
+        "Pressure scale usable as 'p0' in the expression [MPa]");
+      declare_documented(prm,
+                         "theta0",
+                         "10",
+                         Patterns::Double(0.),
+                         "Half nip angle usable as 'theta0' in the expression; "
+                         "given in [deg], seen by the expression in [rad]");
+      prm.leave_subsection();
+    }
+
+    void
+    Load::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Load");
+      pressure_function = prm.get("Pressure function");
+      p0                = prm.get_double("p0");
+      theta0            = prm.get_double("theta0") * degree;
+      prm.leave_subsection();
+    }
+
+    void
+    LoadStepping::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Load stepping");
+      declare_documented(prm,
+                         "Initial steps",
+                         "10",
+                         Patterns::Integer(1),
+                         "The first load increment is 1 / (Initial steps) of "
+                         "the full load");
+      declare_documented(prm,
+                         "Growth factor",
+                         "1.5",
+                         Patterns::Double(1.),
+                         "After a step that converged fast the increment is "
+                         "multiplied by this; 1 gives fixed equal steps");
+      declare_documented(prm,
+                         "Fast Newton iterations",
+                         "4",
+                         Patterns::Integer(1),
+                         "A step that needed at most this many Newton "
+                         "iterations counts as fast");
+      declare_documented(prm,
+                         "Maximum cutbacks",
+                         "8",
+                         Patterns::Integer(0),
+                         "How many times in a row the increment may be halved "
+                         "after a failed step before the run stops");
+      declare_documented(prm,
+                         "Minimum increment",
+                         "1e-6",
+                         Patterns::Double(0.),
+                         "The run stops if a cutback would make the load "
+                         "increment smaller than this fraction of the load");
+      prm.leave_subsection();
+    }
+
+    void
+    LoadStepping::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Load stepping");
+      n_initial_steps        = prm.get_integer("Initial steps");
+      growth_factor          = prm.get_double("Growth factor");
+      fast_newton_iterations = prm.get_integer("Fast Newton iterations");
+      max_cutbacks           = prm.get_integer("Maximum cutbacks");
+      min_increment          = prm.get_double("Minimum increment");
+      prm.leave_subsection();
+    }
+
+    void
+    NonlinearSolver::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Nonlinear solver");
+      declare_documented(prm,
+                         "Maximum iterations",
+                         "15",
+                         Patterns::Integer(1),
+                         "Newton iterations allowed per load step");
+      declare_documented(prm,
+                         "Residual tolerance",
+                         "1e-9",
+                         Patterns::Double(0.),
+                         "Converged when |R_u| / |F_ext| is below this "
+                         "(Euclidean norms of nodal force vectors)");
+      declare_documented(
+        prm,
+        "Increment tolerance",
+        "1e-8",
+        Patterns::Double(0.),
+        "... and |du| / |u| of the last Newton update is below "
+        "this");
+      declare_documented(prm,
+                         "Constraint tolerance",
+                         "1e-10",
+                         Patterns::Double(0.),
+                         "... and sum over cells of |integral(J - 1)| / area "
+                         "of the body is below this");
+      declare_documented(prm,
+                         "Line search",
+                         "true",
+                         Patterns::Bool(),
+                         "Backtrack along the Newton direction when the "
+                         "residual grows or J <= 0 somewhere");
+      declare_documented(
+        prm,
+        "Maximum line search steps",
+        "6",
+        Patterns::Integer(0),
+        "Halvings of the Newton step tried by the line search");
+      declare_documented(prm,
+                         "Verbose",
+                         "false",
+                         Patterns::Bool(),
+                         "Print one line per Newton iteration");
+      prm.leave_subsection();
+    }
+
+    void
+    NonlinearSolver::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Nonlinear solver");
+      max_iterations        = prm.get_integer("Maximum iterations");
+      residual_tolerance    = prm.get_double("Residual tolerance");
+      increment_tolerance   = prm.get_double("Increment tolerance");
+      constraint_tolerance  = prm.get_double("Constraint tolerance");
+      line_search           = prm.get_bool("Line search");
+      max_line_search_steps = prm.get_integer("Maximum line search steps");
+      verbose               = prm.get_bool("Verbose");
+      prm.leave_subsection();
+    }
+
+    void
+    LinearSolver::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Linear solver");
+      declare_documented(prm,
+                         "Direct solver",
+                         "Amesos_Mumps",
+                         Patterns::Selection("Amesos_Mumps|Amesos_Klu"),
+                         "Sparse direct solver (through Trilinos Amesos) for "
+                         "the indefinite, non-symmetric Newton system");
+      prm.leave_subsection();
+    }
+
+    void
+    LinearSolver::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Linear solver");
+      direct_solver = prm.get("Direct solver");
+      prm.leave_subsection();
+    }
+
+    void
+    Output::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      declare_documented(prm,
+                         "Directory",
+                         "output",
+                         Patterns::Anything(),
+                         "Where results go; created if missing");
+      declare_documented(prm,
+                         "Write VTU",
+                         "true",
+                         Patterns::Bool(),
+                         "Write VTU/PVTU files and a PVD record for ParaView");
+      declare_documented(prm,
+                         "VTU every step",
+                         "true",
+                         Patterns::Bool(),
+                         "Write VTU for every converged load step (else only "
+                         "the final state)");
+      declare_documented(prm,
+                         "Write CSV",
+                         "true",
+                         Patterns::Bool(),
+                         "Write outer_surface.csv, bond_surface.csv and "
+                         "load_steps.csv");
+      declare_documented(prm,
+                         "Print timing",
+                         "true",
+                         Patterns::Bool(),
+                         "Print the TimerOutput summary at the end");
+      prm.leave_subsection();
+    }
+
+    void
+    Output::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      directory      = prm.get("Directory");
+      write_vtu      = prm.get_bool("Write VTU");
+      vtu_every_step = prm.get_bool("VTU every step");
+      write_csv      = prm.get_bool("Write CSV");
+      print_timing   = prm.get_bool("Print timing");
+      prm.leave_subsection();
+    }
+
+    void
+    AllParameters::declare(ParameterHandler &prm)
+    {
+      Geometry::declare(prm);
+      Mesh::declare(prm);
+      Material::declare(prm);
+      Discretization::declare(prm);
+      BoundaryConditions::declare(prm);
+      Load::declare(prm);
+      LoadStepping::declare(prm);
+      NonlinearSolver::declare(prm);
+      LinearSolver::declare(prm);
+      Output::declare(prm);
+    }
+
+    void
+    AllParameters::parse(ParameterHandler &prm)
+    {
+      geometry.parse(prm);
+      mesh.parse(prm);
+      material.parse(prm);
+      discretization.parse(prm);
+      boundary_conditions.parse(prm);
+      load.parse(prm);
+      load_stepping.parse(prm);
+      nonlinear_solver.parse(prm);
+      linear_solver.parse(prm);
+      output.parse(prm);
+    }
+
+    void
+    AllParameters::read(const std::string &filename)
+    {
+      {
+        std::ifstream in(filename);
+        AssertThrow(in.good(),
+                    ExcMessage("parameter file '" + filename +
+                               "' cannot be opened"));
+      }
+      ParameterHandler prm;
+      declare(prm);
+      prm.parse_input(filename);
+      parse(prm);
+      validate();
+    }
+
+    void
+    AllParameters::validate() const
+    {
+      const double R1 = geometry.inner_radius;
+      const double R0 = geometry.outer_radius;
+      AssertThrow(R1 > 0,
+                  ExcMessage("Geometry/Inner radius must be positive, got " +
+                             std::to_string(R1) + " mm"));
+      AssertThrow(R1 < R0,
+                  ExcMessage(
+                    "Geometry/Inner radius (" + std::to_string(R1) +
+                    " mm) must be smaller than Geometry/Outer radius (" +
+                    std::to_string(R0) + " mm)"));
+      AssertThrow(geometry.sector_angle > 0 &&
+                    geometry.sector_angle <= numbers::PI * (1 + 1e-12),
+                  ExcMessage("Geometry/Sector angle must lie in (0, 180] deg, "
+                             "got " +
+                             std::to_string(geometry.sector_angle / degree) +
+                             " deg"));
+      AssertThrow(material.C1 + material.C2 > 0,
+                  ExcMessage("Material/C1 + C2 must be positive (shear "
+                             "modulus 2 (C1 + C2)), got C1 = " +
+                             std::to_string(material.C1) + " MPa, C2 = " +
+                             std::to_string(material.C2) + " MPa"));
+      AssertThrow(material.C1 >= 0 && material.C2 >= 0,
+                  ExcMessage("Material/C1 and C2 must not be negative "
+                             "(Mooney-Rivlin stability), got C1 = " +
+                             std::to_string(material.C1) + " MPa, C2 = " +
+                             std::to_string(material.C2) + " MPa"));
+      AssertThrow(mesh.source == MeshSource::builtin || !mesh.mesh_file.empty(),
+                  ExcMessage("Mesh/Mesh file must name a gmsh file when "
+                             "Mesh/Source = gmsh"));
+      // The load expression must parse; constructing the load checks it.
+      PressureLoad check(load, geometry);
+      (void)check;
+      AssertThrow(!output.directory.empty(),
+                  ExcMessage("Output/Directory must not be empty"));
+    }
+  } // namespace Parameters
+} // namespace rollnip

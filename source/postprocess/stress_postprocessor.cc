@@ -1,0 +1,71 @@
+#include <rollnip/postprocess/stress_postprocessor.h>
+#include <rollnip/postprocess/stress_state.h>
+
+namespace rollnip
+{
+  StressPostprocessor::StressPostprocessor(const MooneyRivlin &material)
+      : material(material)
+  {}
+
+  std::vector<std::string>
+  StressPostprocessor::get_names() const
+  {
+    return {"sigma_xx",
+            "sigma_yy",
+            "sigma_xy",
+            "sigma_zz",
+            "sigma_rr",
+            "sigma_thetatheta",
+            "sigma_rtheta",
+            "von_mises",
+            "hydrostatic_pressure",
+            "J",
+            "max_principal_stretch",
+            "min_principal_stretch",
+            "max_principal_strain"};
+  }
+
+  UpdateFlags
+  StressPostprocessor::get_needed_update_flags() const
+  {
+    return update_values | update_gradients | update_quadrature_points;
+  }
+
+  void
+  StressPostprocessor::evaluate_vector_field(
+    const DataPostprocessorInputs::Vector<dim> &inputs,
+    std::vector<Vector<double>>                &computed) const
+  {
+    for (unsigned int p = 0; p < inputs.solution_values.size(); ++p)
+      {
+        Tensor<2, dim> grad_u;
+        Tensor<1, dim> u;
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            u[i]      = inputs.solution_values[p][i];
+            grad_u[i] = inputs.solution_gradients[p][i];
+          }
+        const StressState s =
+          evaluate_stress_state(material,
+                                grad_u,
+                                inputs.solution_values[p][dim],
+                                inputs.evaluation_points[p],
+                                u);
+        const double out[] = {s.sigma[0][0],
+                              s.sigma[1][1],
+                              s.sigma[0][1],
+                              s.sigma_zz,
+                              s.sigma_rr,
+                              s.sigma_tt,
+                              s.sigma_rt,
+                              s.von_mises,
+                              s.hydrostatic_pressure,
+                              s.J,
+                              s.max_stretch,
+                              s.min_stretch,
+                              std::max(s.max_stretch - 1., 1. - s.min_stretch)};
+        for (unsigned int k = 0; k < computed[p].size(); ++k)
+          computed[p][k] = out[k];
+      }
+  }
+} // namespace rollnip

@@ -1,0 +1,211 @@
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_solver.h>
+
+#include <rollnip/problem.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace rollnip
+{
+  double
+  RollProblem::pressure_part_norm(const TrilinosWrappers::MPI::Vector &v) const
+  {
+    double sum = 0;
+    for (const auto i : pressure_dofs)
+      sum += v[i] * v[i];
+    return std::sqrt(Utilities::MPI::sum(sum, mpi_communicator));
+  }
+
+  /**
+   * One factorisation and solve of the Newton system K du = -R with a sparse
+   * direct solver; the saddle-point matrix is indefinite and, with follower
+   * loads, not symmetric.
+   */
+  void
+  RollProblem::solve_linear_system(TrilinosWrappers::MPI::Vector &newton_update)
+  {
+    TimerOutput::Scope t(timer, "linear solve");
+    ++n_linear_solves;
+    TrilinosWrappers::MPI::Vector rhs(system_rhs);
+    rhs *= -1.;
+    SolverControl                  control(1, 0);
+    TrilinosWrappers::SolverDirect solver(
+      control,
+      TrilinosWrappers::SolverDirect::AdditionalData(
+        false, parameters.linear_solver.direct_solver));
+    solver.solve(system_matrix, newton_update, rhs);
+    constraints.distribute(newton_update);
+  }
+
+  /**
+   * Full Newton at a fixed load fraction (doc/intro.md, section 5). The
+   * tests of convergence use
+   *   e_R = |R_u| / |F_ext|,  e_J = sum_K |int_K (J - 1)| / |Omega|,
+   *   e_u = |du| / |u|  (Euclidean norms of nodal vectors);
+   * a step converges when e_R and e_J are below their tolerances and
+   * either e_u is below its tolerance or e_R is 1000 times below its own.
+   * A backtracking line search halves the step while the residual grows or
+   * some J <= 0. Returns false on failure, with the state left as it was.
+   */
+  bool
+  RollProblem::solve_load_step(const double       load_fraction,
+                               const unsigned int step)
+  {
+    const auto                   &nl = parameters.nonlinear_solver;
+    TrilinosWrappers::MPI::Vector start(solution);
+    TrilinosWrappers::MPI::Vector newton_update(solution);
+
+    auto measure = [&](double &e_R, double &e_J) {
+      const double r_p     = pressure_part_norm(system_rhs);
+      const double r_total = system_rhs.l2_norm();
+      const double r_u = std::sqrt(std::max(0., r_total * r_total - r_p * r_p));
+      const double f_ext = external_force.l2_norm();
+      e_R                = r_u / (f_ext > 0 ? f_ext : 1.);
+      double s           = 0;
+      for (const auto i : pressure_dofs)
+        s += std::abs(system_rhs[i]);
+      e_J = Utilities::MPI::sum(s, mpi_communicator) / domain_area;
+    };
+    auto merit = [](const double e_R, const double e_J) {
+      return std::sqrt(e_R * e_R + e_J * e_J);
+    };
+
+    double min_J = assemble(load_fraction, true);
+    double e_R, e_J;
+    measure(e_R, e_J);
+    if (nl.verbose)
+      pcout << "      iter  |R_u|/|F|     sum|J-1|/A    |du|/|u|    step"
+            << std::endl;
+
+    for (unsigned int it = 1; it <= nl.max_iterations; ++it)
+      {
+        if (!(min_J > 0) || !std::isfinite(e_R))
+          break;
+        newton_update = 0;
+        solve_linear_system(newton_update);
+
+        // Backtracking on the merit sqrt(e_R^2 + e_J^2).
+        const double                  old_merit = merit(e_R, e_J);
+        TrilinosWrappers::MPI::Vector base(solution);
+        double                        alpha = 1;
+        for (unsigned int ls = 0;; ++ls)
+          {
+            solution = base;
+            solution.add(alpha, newton_update);
+            locally_relevant_solution = solution;
+            min_J                     = assemble(load_fraction, false);
+            measure(e_R, e_J);
+            const bool ok = min_J > 0 && std::isfinite(e_R) &&
+                            merit(e_R, e_J) < (1. - 1e-4 * alpha) * old_merit;
+            if (ok || !nl.line_search || ls >= nl.max_line_search_steps)
+              break;
+            alpha *= 0.5;
+          }
+        const double u_norm = solution.l2_norm();
+        const double e_u =
+          alpha * newton_update.l2_norm() / (u_norm > 0 ? u_norm : 1.);
+        newton_records.push_back(
+          {step, it, load_fraction, e_R, e_J, e_u, alpha});
+        if (nl.verbose)
+          pcout << "      " << std::setw(4) << it << std::scientific
+                << std::setprecision(3) << "  " << e_R << "     " << e_J
+                << "     " << e_u << "   " << std::fixed << std::setprecision(3)
+                << alpha << std::endl;
+
+        if (!(min_J > 0) || !std::isfinite(e_R))
+          break;
+        const bool converged =
+          e_R < nl.residual_tolerance && e_J < nl.constraint_tolerance &&
+          (e_u < nl.increment_tolerance || e_R < 1e-3 * nl.residual_tolerance);
+        if (converged)
+          {
+            step_records.push_back({step,
+                                    load_fraction,
+                                    it,
+                                    e_R,
+                                    0.,
+                                    radial_displacement_on_line_of_centres(),
+                                    wall_clock.wall_time()});
+            return true;
+          }
+        // The tangent at the accepted point, for the next iteration.
+        min_J = assemble(load_fraction, true);
+      }
+
+    solution                  = start;
+    locally_relevant_solution = solution;
+    if (!(min_J > 0))
+      pcout << "      (J <= 0 somewhere: the cover would invert)" << std::endl;
+    return false;
+  }
+
+  RunStatus
+  RollProblem::run()
+  {
+    wall_clock.restart();
+    const auto &ls = parameters.load_stepping;
+    RunStatus   status;
+    double      lambda = 0;
+    // Linear theory: the whole load in one step (doc/intro.md, section 2).
+    double increment  = material.is_linear() ? 1. : 1. / ls.n_initial_steps;
+    unsigned int step = 0, cutbacks_in_a_row = 0;
+
+    solution                  = 0;
+    locally_relevant_solution = solution;
+    pcout << " step  load fraction  Newton  |R_u|/|F_ext|   u_r(R0,0) [mm]"
+             "   P [N/mm]   time [s]"
+          << std::endl;
+    while (lambda < 1. - 1e-12)
+      {
+        const double target = std::min(1., lambda + increment);
+        if (solve_load_step(target, step + 1))
+          {
+            ++step;
+            lambda                         = target;
+            cutbacks_in_a_row              = 0;
+            StepRecord          &r         = step_records.back();
+            const Tensor<1, dim> resultant = load_resultant(lambda);
+            r.nip_load                     = -2. * resultant[0];
+            pcout << std::setw(5) << step << std::fixed << std::setprecision(6)
+                  << std::setw(15) << lambda << std::setw(8)
+                  << r.newton_iterations << std::scientific
+                  << std::setprecision(3) << std::setw(16) << r.residual
+                  << std::fixed << std::setprecision(6) << std::setw(17)
+                  << r.u_r_centre << std::setw(11) << std::setprecision(4)
+                  << r.nip_load << std::setw(11) << std::setprecision(2)
+                  << r.wall_time << std::endl;
+            if (parameters.output.write_vtu &&
+                (parameters.output.vtu_every_step || lambda >= 1. - 1e-12))
+              write_vtu(step, lambda);
+            if (r.newton_iterations <= ls.fast_newton_iterations)
+              increment *= ls.growth_factor;
+          }
+        else
+          {
+            ++n_cutbacks;
+            ++cutbacks_in_a_row;
+            increment *= 0.5;
+            std::ostringstream msg;
+            if (cutbacks_in_a_row > ls.max_cutbacks ||
+                increment < ls.min_increment)
+              {
+                msg << "the load cannot be reached: Newton failed at load "
+                       "fraction "
+                    << target << " after " << cutbacks_in_a_row - 1
+                    << " cutbacks (increment now " << increment
+                    << "); the last converged load fraction is " << lambda;
+                status.message = msg.str();
+                break;
+              }
+            pcout << "      cutback: Newton failed at load fraction "
+                  << std::setprecision(6) << target
+                  << ", retrying with increment " << increment << std::endl;
+          }
+      }
+    status.converged     = lambda >= 1. - 1e-12;
+    status.load_fraction = lambda;
+    return status;
+  }
+} // namespace rollnip
