@@ -112,6 +112,10 @@ namespace rollnip
     double
     radial_displacement_on_line_of_centres() const;
 
+    /// Radial displacement [mm] of the mesh vertex at @p X (NaN if none).
+    double
+    radial_displacement_at(const Point<dim> &X) const;
+
     /// Writes VTU (and the PVD record) for the current state (output.cc).
     void
     write_vtu(const unsigned int step, const double load_fraction);
@@ -192,7 +196,10 @@ namespace rollnip
     void
     write_csv(const SurfaceData &data) const;
     void
-    write_summary(const RunStatus &status, const SurfaceData &data) const;
+    write_summary(const RunStatus      &status,
+                  const SurfaceData    &data,
+                  const Tensor<1, dim> &resultant,
+                  const double          u_r) const;
 
     const Parameters::AllParameters &parameters;
     MPI_Comm                         mpi_communicator;

@@ -151,14 +151,17 @@ namespace rollnip
   void
   RollProblem::write_results(const RunStatus &status)
   {
-    const SurfaceData  data = surface_data(status.load_fraction);
-    TimerOutput::Scope t(timer, "output");
+    // Collective: every rank takes part, rank 0 writes.
+    const SurfaceData    data      = surface_data(status.load_fraction);
+    const Tensor<1, dim> resultant = load_resultant(status.load_fraction);
+    const double         u_r       = radial_displacement_on_line_of_centres();
+    TimerOutput::Scope   t(timer, "output");
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;
     std::filesystem::create_directories(parameters.output.directory);
     if (parameters.output.write_csv)
       write_csv(data);
-    write_summary(status, data);
+    write_summary(status, data, resultant, u_r);
   }
 
   void
@@ -177,11 +180,12 @@ namespace rollnip
             << p.shear_traction << '\n';
     });
     write_atomically(dir + "/bond_surface.csv", [&](std::ostream &out) {
-      out << "theta_deg,sigma_rr_MPa,sigma_rtheta_MPa,sigma_thetatheta_MPa\n"
+      out << "theta_deg,sigma_rr_MPa,sigma_rtheta_MPa,sigma_thetatheta_MPa,"
+             "sigma_zz_MPa\n"
           << std::setprecision(10);
       for (const auto &p : data.bond)
         out << p.theta * deg << ',' << p.sigma_rr << ',' << p.sigma_rtheta
-            << ',' << p.sigma_thetatheta << '\n';
+            << ',' << p.sigma_thetatheta << ',' << p.sigma_zz << '\n';
     });
     write_atomically(dir + "/load_steps.csv", [&](std::ostream &out) {
       out << "step,load_fraction,newton_iterations,residual,nip_load_N_per_mm,"
@@ -209,15 +213,15 @@ namespace rollnip
    * the last converged step).
    */
   void
-  RollProblem::write_summary(const RunStatus   &status,
-                             const SurfaceData &data) const
+  RollProblem::write_summary(const RunStatus      &status,
+                             const SurfaceData    &data,
+                             const Tensor<1, dim> &R,
+                             const double          u_r) const
   {
-    const auto R = load_resultant(status.load_fraction);
     const bool two_sided =
       parameters.boundary_conditions.condition[BoundaryIds::symmetry_edge] ==
       Parameters::BoundaryCondition::symmetry;
-    const double u_r          = radial_displacement_on_line_of_centres();
-    double       peak_applied = 0, peak_normal = 0;
+    double peak_applied = 0, peak_normal = 0;
     for (const auto &p : data.outer)
       {
         peak_applied = std::max(peak_applied, p.applied_pressure);

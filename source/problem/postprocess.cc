@@ -77,16 +77,26 @@ namespace rollnip
   double
   RollProblem::radial_displacement_on_line_of_centres() const
   {
-    const double     R0 = parameters.geometry.outer_radius;
-    const Point<dim> target(R0, 0.);
-    double           sum = 0, count = 0;
+    return radial_displacement_at(
+      Point<dim>(parameters.geometry.outer_radius, 0.));
+  }
+
+  double
+  RollProblem::radial_displacement_at(const Point<dim> &X) const
+  {
+    const double tolerance = 1e-8 * X.norm();
+    double       sum = 0, count = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         for (const auto v : cell->vertex_indices())
-          if (cell->vertex(v).distance(target) < 1e-8 * R0)
+          if (cell->vertex(v).distance(X) < tolerance)
             {
               // Vertex DoFs of the FESystem come as (u_x, u_y, ...).
-              sum += locally_relevant_solution[cell->vertex_dof_index(v, 0)];
+              const double ux =
+                locally_relevant_solution[cell->vertex_dof_index(v, 0)];
+              const double uy =
+                locally_relevant_solution[cell->vertex_dof_index(v, 1)];
+              sum += (ux * X[0] + uy * X[1]) / X.norm();
               count += 1;
             }
     sum   = Utilities::MPI::sum(sum, mpi_communicator);
@@ -213,9 +223,10 @@ namespace rollnip
                                 t * sn_vec});
                   }
                 else
-                  accumulate(bond,
-                             theta,
-                             {theta, s.sigma_rr, s.sigma_rt, s.sigma_tt});
+                  accumulate(
+                    bond,
+                    theta,
+                    {theta, s.sigma_rr, s.sigma_rt, s.sigma_tt, s.sigma_zz});
               }
           }
 
@@ -223,8 +234,8 @@ namespace rollnip
     for (const auto &r : gather_rows(outer, 10, mpi_communicator))
       data.outer.push_back(
         {r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7], r[8], r[9]});
-    for (const auto &r : gather_rows(bond, 4, mpi_communicator))
-      data.bond.push_back({r[0], r[1], r[2], r[3]});
+    for (const auto &r : gather_rows(bond, 5, mpi_communicator))
+      data.bond.push_back({r[0], r[1], r[2], r[3], r[4]});
 
     // Extremes over the Gauss points of the whole cover.
     const unsigned int degree = parameters.discretization.displacement_degree();

@@ -24,7 +24,7 @@ namespace rollnip
   struct BondSurfacePoint
   {
     double theta; ///< reference angle [rad]
-    double sigma_rr, sigma_rtheta, sigma_thetatheta;
+    double sigma_rr, sigma_rtheta, sigma_thetatheta, sigma_zz;
   };
 
   /// Cell-wide extremes over the whole cover.

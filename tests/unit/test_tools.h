@@ -1,0 +1,85 @@
+#ifndef rollnip_tests_test_tools_h
+#define rollnip_tests_test_tools_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <rollnip/parameters.h>
+#include <rollnip/problem.h>
+
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+/**
+ * Small helpers shared by the test programs: scenes are written as .prm
+ * text in the test itself, and every check prints what it compared.
+ */
+namespace rollnip
+{
+  namespace testing
+  {
+    /// Parameters from .prm text on top of the defaults; output is off
+    /// unless the text turns it on.
+    inline Parameters::AllParameters
+    parameters_from_string(const std::string &text)
+    {
+      ParameterHandler prm;
+      Parameters::AllParameters::declare(prm);
+      prm.parse_input_from_string("subsection Output\n"
+                                  "  set Write VTU = false\n"
+                                  "  set Write CSV = false\n"
+                                  "  set Print timing = false\n"
+                                  "  set Directory = test_output\n"
+                                  "end\n" +
+                                  text);
+      Parameters::AllParameters p;
+      p.parse(prm);
+      p.validate();
+      return p;
+    }
+
+    /// Counts failed checks; the test's exit code.
+    struct Checker
+    {
+      unsigned int n_failed = 0;
+
+      void
+      check(const bool ok, const std::string &what)
+      {
+        std::cout << (ok ? "  ok:     " : "  FAILED: ") << what << std::endl;
+        if (!ok)
+          ++n_failed;
+      }
+
+      int
+      result() const
+      {
+        std::cout << (n_failed == 0
+                        ? "all checks passed"
+                        : std::to_string(n_failed) + " check(s) failed")
+                  << std::endl;
+        return n_failed == 0 ? 0 : 1;
+      }
+    };
+
+    /// A number as text with 4 significant digits.
+    inline std::string
+    num(const double x)
+    {
+      std::ostringstream s;
+      s << std::setprecision(4) << x;
+      return s.str();
+    }
+
+    /// Observed order of convergence from errors at mesh sizes h and h/2.
+    inline double
+    order(const double e_coarse, const double e_fine)
+    {
+      return std::log(e_coarse / e_fine) / std::log(2.);
+    }
+  } // namespace testing
+} // namespace rollnip
+
+#endif
