@@ -11,11 +11,6 @@ using namespace rollnip;
 
 namespace
 {
-  struct Result
-  {
-    SurfaceData data;
-  };
-
   SurfaceData
   solve(const double C1, const double C2, const unsigned int refinements)
   {
@@ -69,7 +64,7 @@ main(int argc, char **argv)
     {
       const SurfaceData     mixed = solve(0.25, 0.25, level);
       std::array<double, 3> w     = {{0, 0, 0}};
-      for (const auto split :
+      for (const auto &split :
            {std::make_pair(0.5, 0.), std::make_pair(0., 0.5)})
         {
           const auto d =

@@ -1,0 +1,20 @@
+#ifndef rollnip_output_atomic_file_h
+#define rollnip_output_atomic_file_h
+
+#include <functional>
+#include <ostream>
+#include <string>
+
+namespace rollnip
+{
+  /**
+   * Writes a file whole or not at all: @p write fills a temporary file next
+   * to @p path, which is renamed onto @p path only after it was flushed and
+   * closed without error. Throws with the file name on failure.
+   */
+  void
+  write_atomically(const std::string                         &path,
+                   const std::function<void(std::ostream &)> &write);
+} // namespace rollnip
+
+#endif
