@@ -11,6 +11,8 @@
 #include <deal.II/fe/mapping_q.h>
 
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -82,15 +84,36 @@ namespace rollnip
     /// converged steps; never throws for a load it cannot reach but
     /// reports it in the status (newton.cc).
     RunStatus
-    run();
+    run(const bool from_current_state = false);
 
     /**
-     * Replaces the follower pressure f(Theta) [MPa] of Load/Pressure
-     * function by @p pressure (full load, scaled by the load fraction).
-     * This is how the contact iteration drives the solver.
+     * Replaces the follower pressure of Load/Pressure function, by default
+     * lambda f(Theta), by @p pressure(Theta, lambda) [MPa] with Theta the
+     * reference angle and lambda the load fraction in [0, 1]. This is how
+     * the contact iteration drives the solver: it ramps from the pressure
+     * of the last solution to a new one.
      */
     void
-    set_pressure(std::function<double(double)> pressure);
+    set_pressure(std::function<double(double, double)> pressure);
+
+    /**
+     * Derivative of the residual with respect to the amplitude of an extra
+     * follower pressure g(Theta) at the current state, i.e. the load vector
+     * int g (cof F N) . v dA with the constraints applied (assembly.cc).
+     */
+    TrilinosWrappers::MPI::Vector
+    pressure_load_derivative(const std::function<double(double)> &g) const;
+
+    /// Factorises the current tangent (after assemble(..., true)) for
+    /// repeated solves (newton.cc).
+    void
+    factorize_tangent();
+
+    /// Solves K x = rhs with the last factorisation; x is distributed
+    /// through the constraints.
+    void
+    solve_with_tangent(const TrilinosWrappers::MPI::Vector &rhs,
+                       TrilinosWrappers::MPI::Vector       &x);
 
     /**
      * Assembles the residual R(u, q; load fraction) of the current solution
@@ -209,7 +232,7 @@ namespace rollnip
 
     parallel::distributed::Triangulation<dim> triangulation;
     const MooneyRivlin                        material;
-    std::function<double(double)>             pressure;
+    std::function<double(double, double)>     pressure;
 
     std::unique_ptr<MappingQ<dim>> mapping;
     std::unique_ptr<FESystem<dim>> fe;
@@ -219,11 +242,13 @@ namespace rollnip
     IndexSet                       pressure_dofs; ///< owned pressure DoFs
     AffineConstraints<double>      constraints;
 
-    TrilinosWrappers::SparseMatrix system_matrix;
-    TrilinosWrappers::MPI::Vector  solution; ///< owned entries
-    TrilinosWrappers::MPI::Vector  locally_relevant_solution;
-    TrilinosWrappers::MPI::Vector  system_rhs;     ///< residual R
-    TrilinosWrappers::MPI::Vector  external_force; ///< surface load part
+    TrilinosWrappers::SparseMatrix                  system_matrix;
+    SolverControl                                   direct_solver_control;
+    std::unique_ptr<TrilinosWrappers::SolverDirect> direct_solver;
+    TrilinosWrappers::MPI::Vector                   solution; ///< owned entries
+    TrilinosWrappers::MPI::Vector                   locally_relevant_solution;
+    TrilinosWrappers::MPI::Vector                   system_rhs; ///< residual R
+    TrilinosWrappers::MPI::Vector external_force; ///< surface load part
 
     double domain_area = 0;
 

@@ -135,7 +135,7 @@ namespace rollnip
                 {
                   const Point<dim>     &X = fe_face_values.quadrature_point(q);
                   const double          theta = std::atan2(X[1], X[0]);
-                  const double          f     = load_fraction * pressure(theta);
+                  const double          f     = pressure(theta, load_fraction);
                   const Tensor<1, dim> &N     = fe_face_values.normal_vector(q);
                   const double          JxW   = fe_face_values.JxW(q);
                   // Traction per reference area, pointing into the body.
@@ -182,5 +182,76 @@ namespace rollnip
     system_rhs.compress(VectorOperation::add);
     external_force.compress(VectorOperation::add);
     return Utilities::MPI::min(min_J, mpi_communicator);
+  }
+} // namespace rollnip
+
+namespace rollnip
+{
+  /**
+   * d R_u / d s for the extra follower pressure s g(Theta) at the current
+   * state: from (4.1), int g (cof F N) . v dA (N dA in linear theory). The
+   * contact iteration uses these as right-hand sides for the sensitivities
+   * of the surface position to the parameters of the pressure.
+   */
+  TrilinosWrappers::MPI::Vector
+  RollProblem::pressure_load_derivative(
+    const std::function<double(double)> &g) const
+  {
+    const unsigned int degree = parameters.discretization.displacement_degree();
+    const QGauss<dim - 1>                face_quadrature(degree + 1);
+    FEFaceValues<dim>                    fe_face_values(*mapping,
+                                     *fe,
+                                     face_quadrature,
+                                     update_values | update_gradients |
+                                       update_normal_vectors |
+                                       update_quadrature_points |
+                                       update_JxW_values);
+    const FEValuesExtractors::Vector     displacement(0);
+    const unsigned int                   n_dofs = fe->n_dofs_per_cell();
+    Vector<double>                       cell_vector(n_dofs);
+    std::vector<types::global_dof_index> dof_indices(n_dofs);
+    std::vector<Tensor<2, dim>>          grad_u(face_quadrature.size());
+    const Tensor<2, dim>                 I = unit_symmetric_tensor<dim>();
+    const auto                   &bc = parameters.boundary_conditions.condition;
+    TrilinosWrappers::MPI::Vector result(locally_owned_dofs, mpi_communicator);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell_vector  = 0;
+          bool touched = false;
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() < BoundaryIds::n_boundaries &&
+                bc[cell->face(f)->boundary_id()] ==
+                  Parameters::BoundaryCondition::pressure)
+              {
+                fe_face_values.reinit(cell, f);
+                fe_face_values[displacement].get_function_gradients(
+                  locally_relevant_solution, grad_u);
+                for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                  {
+                    const Point<dim> &X  = fe_face_values.quadrature_point(q);
+                    const double      gq = g(std::atan2(X[1], X[0]));
+                    if (gq == 0)
+                      continue;
+                    touched                 = true;
+                    const Tensor<1, dim> &N = fe_face_values.normal_vector(q);
+                    const Tensor<1, dim>  nda =
+                      material.is_linear() ? N : cofactor(I + grad_u[q]) * N;
+                    for (unsigned int i = 0; i < n_dofs; ++i)
+                      cell_vector(i) +=
+                        gq * nda * fe_face_values[displacement].value(i, q) *
+                        fe_face_values.JxW(q);
+                  }
+              }
+          if (!touched)
+            continue;
+          cell->get_dof_indices(dof_indices);
+          constraints.distribute_local_to_global(cell_vector,
+                                                 dof_indices,
+                                                 result);
+        }
+    result.compress(VectorOperation::add);
+    return result;
   }
 } // namespace rollnip

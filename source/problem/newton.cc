@@ -26,17 +26,32 @@ namespace rollnip
   void
   RollProblem::solve_linear_system(TrilinosWrappers::MPI::Vector &newton_update)
   {
-    TimerOutput::Scope t(timer, "linear solve");
-    ++n_linear_solves;
     TrilinosWrappers::MPI::Vector rhs(system_rhs);
     rhs *= -1.;
-    SolverControl                  control(1, 0);
-    TrilinosWrappers::SolverDirect solver(
-      control,
+    factorize_tangent();
+    solve_with_tangent(rhs, newton_update);
+  }
+
+  void
+  RollProblem::factorize_tangent()
+  {
+    TimerOutput::Scope t(timer, "linear solve");
+    ++n_linear_solves;
+    direct_solver = std::make_unique<TrilinosWrappers::SolverDirect>(
+      direct_solver_control,
       TrilinosWrappers::SolverDirect::AdditionalData(
         false, parameters.linear_solver.direct_solver));
-    solver.solve(system_matrix, newton_update, rhs);
-    constraints.distribute(newton_update);
+    direct_solver->initialize(system_matrix);
+  }
+
+  void
+  RollProblem::solve_with_tangent(const TrilinosWrappers::MPI::Vector &rhs,
+                                  TrilinosWrappers::MPI::Vector       &x)
+  {
+    TimerOutput::Scope t(timer, "linear solve");
+    Assert(direct_solver, ExcMessage("factorize_tangent() first"));
+    direct_solver->solve(x, rhs);
+    constraints.distribute(x);
   }
 
   /**
@@ -142,7 +157,7 @@ namespace rollnip
   }
 
   RunStatus
-  RollProblem::run()
+  RollProblem::run(const bool from_current_state)
   {
     wall_clock.restart();
     const auto &ls = parameters.load_stepping;
@@ -152,8 +167,11 @@ namespace rollnip
     double increment  = material.is_linear() ? 1. : 1. / ls.n_initial_steps;
     unsigned int step = 0, cutbacks_in_a_row = 0;
 
-    solution                  = 0;
-    locally_relevant_solution = solution;
+    if (!from_current_state)
+      {
+        solution                  = 0;
+        locally_relevant_solution = solution;
+      }
     pcout << " step  load fraction  Newton  |R_u|/|F_ext|   u_r(R0,0) [mm]"
              "   P [N/mm]   time [s]"
           << std::endl;

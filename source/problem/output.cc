@@ -155,12 +155,14 @@ namespace rollnip
     const SurfaceData    data      = surface_data(status.load_fraction);
     const Tensor<1, dim> resultant = load_resultant(status.load_fraction);
     const double         u_r       = radial_displacement_on_line_of_centres();
-    TimerOutput::Scope   t(timer, "output");
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;
     std::filesystem::create_directories(parameters.output.directory);
     if (parameters.output.write_csv)
-      write_csv(data);
+      {
+        TimerOutput::Scope t(timer, "output");
+        write_csv(data);
+      }
     write_summary(status, data, resultant, u_r);
   }
 

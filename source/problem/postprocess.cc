@@ -135,7 +135,7 @@ namespace rollnip
                 {
                   const Point<dim> &X = fe_face_values.quadrature_point(q);
                   const double      f =
-                    load_fraction * pressure(std::atan2(X[1], X[0]));
+                    pressure(std::atan2(X[1], X[0]), load_fraction);
                   const Tensor<1, dim> &N = fe_face_values.normal_vector(q);
                   const Tensor<1, dim>  nda =
                     material.is_linear() ? N : cofactor(I + grad_u[q]) * N;
@@ -207,7 +207,7 @@ namespace rollnip
                   {
                     const double c = std::cos(theta), sn = std::sin(theta);
                     const double applied =
-                      pressure_on_outer ? load_fraction * pressure(theta) : 0.;
+                      pressure_on_outer ? pressure(theta, load_fraction) : 0.;
                     const Tensor<1, dim> sn_vec = s.sigma * n;
                     accumulate(outer,
                                theta,

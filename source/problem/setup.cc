@@ -35,7 +35,9 @@ namespace rollnip
   {
     auto load =
       std::make_shared<PressureLoad>(parameters.load, parameters.geometry);
-    pressure = [load](const double theta) { return load->value(theta); };
+    pressure = [load](const double theta, const double lambda) {
+      return lambda * load->value(theta);
+    };
   }
 
   RollProblem::~RollProblem()
@@ -44,7 +46,7 @@ namespace rollnip
   }
 
   void
-  RollProblem::set_pressure(std::function<double(double)> new_pressure)
+  RollProblem::set_pressure(std::function<double(double, double)> new_pressure)
   {
     pressure = std::move(new_pressure);
   }
