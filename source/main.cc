@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <rollnip/contact/inverse_contact.h>
 #include <rollnip/parameters.h>
 #include <rollnip/problem.h>
 #include <rollnip/run_errors.h>
@@ -98,7 +99,20 @@ main(int argc, char **argv)
           std::cout << "rollnip: '" << file << "' is valid" << std::endl;
         return 0;
       }
-    const RunStatus status = problem.run();
+    RunStatus status;
+    if (parameters.contact.mode == Parameters::ContactMode::nip_angle)
+      {
+        InverseContact      contact(problem, parameters);
+        const ContactResult result = contact.solve(parameters.contact.theta0);
+        status.converged           = result.converged;
+        status.load_fraction       = 1.;
+        status.message             = "contact: " + result.message;
+        write_contact_results(result, parameters.output.directory);
+        if (parameters.output.write_vtu)
+          problem.write_vtu(9999, 1.);
+      }
+    else
+      status = problem.run();
     problem.write_results(status);
     if (!status.converged)
       {

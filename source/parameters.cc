@@ -4,6 +4,7 @@
 #include <rollnip/parameters.h>
 
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 namespace rollnip
@@ -468,6 +469,77 @@ namespace rollnip
     }
 
     void
+    Contact::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Contact");
+      declare_documented(prm,
+                         "Mode",
+                         "none",
+                         Patterns::Selection("none|nip angle"),
+                         "none: apply Load/Pressure function; nip angle: "
+                         "Batra's inverse iteration, find the contact "
+                         "pressure for the half nip angle theta0 given below "
+                         "(the outer arc must have condition 'pressure')");
+      declare_documented(prm,
+                         "Indenter radius",
+                         "76.2",
+                         Patterns::Anything(),
+                         "Rbar, radius of the rigid indenter [mm]; 'inf' for "
+                         "a flat rigid plane (two equal rolls by symmetry)");
+      declare_documented(prm,
+                         "Half nip angle",
+                         "8",
+                         Patterns::Double(0.),
+                         "theta0, reference half angle of the contact zone "
+                         "[deg]; any real value, not tied to mesh nodes");
+      declare_documented(prm,
+                         "Conformity tolerance",
+                         "1e-4",
+                         Patterns::Double(0.),
+                         "Largest distance of a contact-zone surface node "
+                         "from the indenter, as a fraction of the "
+                         "indentation u0 (the paper accepted 1e-2)");
+      declare_documented(prm,
+                         "Maximum iterations",
+                         "25",
+                         Patterns::Integer(1),
+                         "Contact (Newton) iterations on the pressure "
+                         "parameters");
+      prm.leave_subsection();
+    }
+
+    void
+    Contact::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Contact");
+      mode = prm.get("Mode") == "nip angle" ? ContactMode::nip_angle
+                                            : ContactMode::none;
+      const std::string r = prm.get("Indenter radius");
+      if (r == "inf" || r == "infinity")
+        indenter_radius = std::numeric_limits<double>::infinity();
+      else
+        {
+          std::size_t used = 0;
+          try
+            {
+              indenter_radius = std::stod(r, &used);
+            }
+          catch (...)
+            {
+              used = 0;
+            }
+          AssertThrow(used == r.size() && used > 0 && indenter_radius > 0,
+                      ExcMessage("Contact/Indenter radius must be a positive "
+                                 "number of mm or 'inf', got '" +
+                                 r + "'"));
+        }
+      theta0         = prm.get_double("Half nip angle") * degree;
+      tolerance      = prm.get_double("Conformity tolerance");
+      max_iterations = prm.get_integer("Maximum iterations");
+      prm.leave_subsection();
+    }
+
+    void
     AllParameters::declare(ParameterHandler &prm)
     {
       Geometry::declare(prm);
@@ -480,6 +552,7 @@ namespace rollnip
       NonlinearSolver::declare(prm);
       LinearSolver::declare(prm);
       Output::declare(prm);
+      Contact::declare(prm);
     }
 
     void
@@ -495,6 +568,7 @@ namespace rollnip
       nonlinear_solver.parse(prm);
       linear_solver.parse(prm);
       output.parse(prm);
+      contact.parse(prm);
     }
 
     void
@@ -548,6 +622,17 @@ namespace rollnip
       // The load expression must parse; constructing the load checks it.
       PressureLoad check(load, geometry);
       (void)check;
+      if (contact.mode != ContactMode::none)
+        {
+          AssertThrow(boundary_conditions.condition[BoundaryIds::outer_arc] ==
+                        BoundaryCondition::pressure,
+                      ExcMessage("Contact/Mode needs Boundary conditions/Outer "
+                                 "arc (id 1) = pressure"));
+          AssertThrow(contact.theta0 > 0 &&
+                        contact.theta0 < geometry.sector_angle,
+                      ExcMessage("Contact/Half nip angle must lie in (0, "
+                                 "Geometry/Sector angle)"));
+        }
       AssertThrow(!output.directory.empty(),
                   ExcMessage("Output/Directory must not be empty"));
     }

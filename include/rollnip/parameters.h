@@ -182,6 +182,26 @@ namespace rollnip
       parse(ParameterHandler &prm);
     };
 
+    enum class ContactMode
+    {
+      none,     ///< the pressure of Load/Pressure function is applied
+      nip_angle ///< Batra's inverse iteration: theta0 given, f found
+    };
+
+    struct Contact
+    {
+      ContactMode  mode;
+      double       indenter_radius; ///< Rbar [mm]; infinity: a flat plane
+      double       theta0;          ///< half nip angle [rad]
+      double       tolerance;       ///< conformity, as a fraction of u0
+      unsigned int max_iterations;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
     /// All parameters of a run, one member per subsection.
     struct AllParameters
     {
@@ -195,6 +215,7 @@ namespace rollnip
       NonlinearSolver    nonlinear_solver;
       LinearSolver       linear_solver;
       Output             output;
+      Contact            contact;
 
       static void
       declare(ParameterHandler &prm);

@@ -123,6 +123,13 @@ namespace rollnip
     double
     assemble(const double load_fraction, const bool with_matrix);
 
+    /// Whether run() prints one line per load step (on by default).
+    void
+    set_step_log(const bool on)
+    {
+      log_steps = on;
+    }
+
     /// Outer and bond surface values of the current state (postprocess.cc).
     SurfaceData
     surface_data(const double load_fraction) const;
@@ -251,6 +258,7 @@ namespace rollnip
     TrilinosWrappers::MPI::Vector external_force; ///< surface load part
 
     double domain_area = 0;
+    bool   log_steps   = true;
 
     std::vector<NewtonRecord>                   newton_records;
     std::vector<StepRecord>                     step_records;

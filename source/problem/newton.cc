@@ -172,9 +172,10 @@ namespace rollnip
         solution                  = 0;
         locally_relevant_solution = solution;
       }
-    pcout << " step  load fraction  Newton  |R_u|/|F_ext|   u_r(R0,0) [mm]"
-             "   P [N/mm]   time [s]"
-          << std::endl;
+    if (log_steps)
+      pcout << " step  load fraction  Newton  |R_u|/|F_ext|   u_r(R0,0) [mm]"
+               "   P [N/mm]   time [s]"
+            << std::endl;
     while (lambda < 1. - 1e-12)
       {
         const double target = std::min(1., lambda + increment);
@@ -186,14 +187,15 @@ namespace rollnip
             StepRecord          &r         = step_records.back();
             const Tensor<1, dim> resultant = load_resultant(lambda);
             r.nip_load                     = -2. * resultant[0];
-            pcout << std::setw(5) << step << std::fixed << std::setprecision(6)
-                  << std::setw(15) << lambda << std::setw(8)
-                  << r.newton_iterations << std::scientific
-                  << std::setprecision(3) << std::setw(16) << r.residual
-                  << std::fixed << std::setprecision(6) << std::setw(17)
-                  << r.u_r_centre << std::setw(11) << std::setprecision(4)
-                  << r.nip_load << std::setw(11) << std::setprecision(2)
-                  << r.wall_time << std::endl;
+            if (log_steps)
+              pcout << std::setw(5) << step << std::fixed
+                    << std::setprecision(6) << std::setw(15) << lambda
+                    << std::setw(8) << r.newton_iterations << std::scientific
+                    << std::setprecision(3) << std::setw(16) << r.residual
+                    << std::fixed << std::setprecision(6) << std::setw(17)
+                    << r.u_r_centre << std::setw(11) << std::setprecision(4)
+                    << r.nip_load << std::setw(11) << std::setprecision(2)
+                    << r.wall_time << std::endl;
             if (parameters.output.write_vtu &&
                 (parameters.output.vtu_every_step || lambda >= 1. - 1e-12))
               write_vtu(step, lambda);

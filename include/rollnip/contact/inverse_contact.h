@@ -1,0 +1,79 @@
+#ifndef rollnip_contact_inverse_contact_h
+#define rollnip_contact_inverse_contact_h
+
+#include <rollnip/contact/indenter.h>
+#include <rollnip/problem.h>
+
+#include <vector>
+
+namespace rollnip
+{
+  /// The checks and results of one solved nip (doc/intro.md, section 7).
+  struct ContactResult
+  {
+    bool         converged = false;
+    std::string  message;
+    double       theta0        = 0; ///< [rad]
+    double       indentation   = 0; ///< u0 [mm]
+    double       nip_load      = 0; ///< P, two-sided [N/mm]
+    double       conformity    = 0; ///< max |gap| / u0 over the contact zone
+    double       penetration   = 0; ///< max(-gap, 0) / u0 outside the zone
+    double       min_pressure  = 0; ///< min f at the parameters [MPa]
+    double       peak_pressure = 0; ///< max f [MPa]
+    unsigned int iterations    = 0;
+    std::vector<double> knots;  ///< reference angles of the pressure basis
+    std::vector<double> values; ///< f at the knots [MPa]
+  };
+
+  /**
+   * Batra's inverse contact iteration (doc/intro.md, section 7): for a
+   * prescribed reference half nip angle theta0, find the follower pressure
+   * f(Theta) on [0, theta0], f(theta0) = 0, such that the deformed surface
+   * lies on the indenter on the whole zone. f is piecewise linear between
+   * the outer-surface nodes in [0, theta0) and theta0; its nodal values are
+   * the unknowns. The equations are zero gaps at those nodes (but the one
+   * on the line of centres, which defines u0) and at theta0 itself. Newton
+   * on the values: the gap sensitivities come from linearised solves with
+   * the converged tangent, one factorisation per iteration; the small dense
+   * system is solved with Eigen.
+   */
+  class InverseContact
+  {
+  public:
+    InverseContact(RollProblem                     &problem,
+                   const Parameters::AllParameters &parameters);
+
+    ContactResult
+    solve(const double theta0);
+
+  private:
+    struct SurfaceNode
+    {
+      double                  theta;
+      Point<dim>              X;
+      types::global_dof_index dof[dim];
+    };
+
+    /// The outer-surface nodes, ordered by angle, identical on all ranks.
+    void
+    collect_surface_nodes();
+
+    /// u at all surface nodes of a distributed vector (on all ranks).
+    std::vector<Tensor<1, dim>>
+    nodal_values(const TrilinosWrappers::MPI::Vector &v) const;
+
+    RollProblem                     &problem;
+    const Parameters::AllParameters &parameters;
+    const Indenter                   indenter;
+    std::vector<SurfaceNode>         nodes;
+    ConditionalOStream               pcout;
+  };
+
+  /// contact.txt (scalars and checks) and contact_pressure.csv (f at the
+  /// knots) in @p directory, written by rank 0.
+  void
+  write_contact_results(const ContactResult &result,
+                        const std::string   &directory);
+} // namespace rollnip
+
+#endif

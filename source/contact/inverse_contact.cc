@@ -1,0 +1,345 @@
+#include <deal.II/base/mpi.h>
+
+#include <rollnip/boundary_ids.h>
+#include <rollnip/contact/inverse_contact.h>
+#include <rollnip/output/atomic_file.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <map>
+
+namespace rollnip
+{
+  namespace
+  {
+    /// Piecewise-linear hat function k on the knots t (f(t.back()) = 0).
+    double
+    hat(const std::vector<double> &t, const unsigned int k, const double x)
+    {
+      if (x < 0 || x >= t.back())
+        return 0;
+      if (k > 0 && x >= t[k - 1] && x <= t[k])
+        return (x - t[k - 1]) / (t[k] - t[k - 1]);
+      if (x >= t[k] && x <= t[k + 1])
+        return (t[k + 1] - x) / (t[k + 1] - t[k]);
+      return 0;
+    }
+
+    /// f(x) = sum_k a_k hat_k(x).
+    double
+    interpolate(const std::vector<double> &t,
+                const std::vector<double> &a,
+                const double               x)
+    {
+      double f = 0;
+      for (unsigned int k = 0; k < a.size(); ++k)
+        f += a[k] * hat(t, k, x);
+      return f;
+    }
+  } // namespace
+
+  InverseContact::InverseContact(RollProblem                     &problem,
+                                 const Parameters::AllParameters &parameters)
+      : problem(problem)
+      , parameters(parameters)
+      , indenter(parameters.geometry.outer_radius,
+                 parameters.contact.indenter_radius)
+      , pcout(std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+  {}
+
+  void
+  InverseContact::collect_surface_nodes()
+  {
+    std::vector<double> flat;
+    for (const auto &cell : problem.dofs().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == BoundaryIds::outer_arc)
+            for (unsigned int v = 0; v < 2; ++v)
+              {
+                const Point<dim> X = cell->face(f)->vertex(v);
+                flat.insert(flat.end(),
+                            {std::atan2(X[1], X[0]),
+                             X[0],
+                             X[1],
+                             double(cell->face(f)->vertex_dof_index(v, 0)),
+                             double(cell->face(f)->vertex_dof_index(v, 1))});
+              }
+    std::map<long long, SurfaceNode> unique;
+    for (const auto &part : Utilities::MPI::all_gather(MPI_COMM_WORLD, flat))
+      for (std::size_t i = 0; i < part.size(); i += 5)
+        unique[std::llround(part[i] * 1e9)] =
+          SurfaceNode{part[i],
+                      Point<dim>(part[i + 1], part[i + 2]),
+                      {types::global_dof_index(part[i + 3]),
+                       types::global_dof_index(part[i + 4])}};
+    nodes.clear();
+    for (const auto &entry : unique)
+      nodes.push_back(entry.second);
+  }
+
+  std::vector<Tensor<1, dim>>
+  InverseContact::nodal_values(const TrilinosWrappers::MPI::Vector &v) const
+  {
+    std::vector<double> values(dim * nodes.size(), 0.);
+    const IndexSet     &owned = problem.locally_owned();
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        if (owned.is_element(nodes[i].dof[d]))
+          values[dim * i + d] = v[nodes[i].dof[d]];
+    Utilities::MPI::sum(values, MPI_COMM_WORLD, values);
+    std::vector<Tensor<1, dim>> u(nodes.size());
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        u[i][d] = values[dim * i + d];
+    return u;
+  }
+
+  ContactResult
+  InverseContact::solve(const double theta0)
+  {
+    collect_surface_nodes();
+    problem.set_step_log(false);
+    ContactResult result;
+    result.theta0 = theta0;
+    AssertThrow(nodes.size() > 2 && std::abs(nodes[0].theta) < 1e-12,
+                ExcMessage("the outer surface has no node on the line of "
+                           "centres (R0, 0)"));
+
+    // Knots: the nodes below theta0, then theta0 itself (f = 0 there). A
+    // node closer to theta0 than a quarter of its cell is dropped: its
+    // equation would nearly repeat the one at theta0.
+    unsigned int m = 0;
+    while (m < nodes.size() && nodes[m].theta < theta0)
+      ++m;
+    AssertThrow(m < nodes.size(),
+                ExcMessage("Contact/Half nip angle: the contact zone reaches "
+                           "the end of the outer arc"));
+    const unsigned int above = m; // first node beyond theta0
+    if (m > 1 && theta0 - nodes[m - 1].theta <
+                   0.25 * (nodes[m].theta - nodes[m - 1].theta))
+      --m;
+    AssertThrow(m >= 2,
+                ExcMessage("Contact/Half nip angle is too small for the mesh: "
+                           "refine near theta = 0 (at least two surface nodes "
+                           "must lie in the contact zone)"));
+    std::vector<double> knots;
+    for (unsigned int k = 0; k < m; ++k)
+      knots.push_back(nodes[k].theta);
+    knots.push_back(theta0);
+
+    // Where theta0 falls between two nodes, for its interpolated position.
+    const unsigned int left = above - 1;
+    const double       weight =
+      (theta0 - nodes[left].theta) / (nodes[above].theta - nodes[left].theta);
+
+    // Initial guess: a Hertz-like parabola with the peak pressure of a
+    // rigid cylinder on an incompressible half-space, E* = 4 G.
+    const double R0 = parameters.geometry.outer_radius;
+    const double G  = 2 * (parameters.material.C1 + parameters.material.C2);
+    const double R_eff =
+      indenter.is_flat() ? R0 : 1. / (1. / R0 + 1. / indenter.radius());
+    const double        half_width = R0 * std::sin(theta0);
+    const double        p_hertz    = 4 * G * half_width / (2 * R_eff);
+    std::vector<double> a(m);
+    for (unsigned int k = 0; k < m; ++k)
+      a[k] =
+        p_hertz * std::sqrt(std::max(0., 1 - std::pow(knots[k] / theta0, 2)));
+
+    std::vector<double>           f_applied(m, 0.); // the pressure of the state
+    TrilinosWrappers::MPI::Vector saved(
+      problem.current_solution().locally_owned_elements(), MPI_COMM_WORLD);
+    TrilinosWrappers::MPI::Vector du(saved);
+    bool                          first = true;
+
+    pcout << "Contact iteration, theta0 = " << theta0 * 180 / numbers::PI
+          << " deg, " << m << " pressure parameters" << std::endl
+          << " iter  conformity |gap|/u0   u0 [mm]      P [N/mm]   min f [MPa]"
+          << std::endl;
+    for (unsigned int it = 1; it <= parameters.contact.max_iterations; ++it)
+      {
+        // Solve the cover for the pressure a, ramping from the last one;
+        // halve the update if that fails.
+        bool solved = false;
+        for (unsigned int attempt = 0; attempt < 6 && !solved; ++attempt)
+          {
+            saved                          = problem.current_solution();
+            const std::vector<double> from = f_applied, to = a;
+            problem.set_pressure(
+              [knots, from, to](const double theta, const double lambda) {
+                return interpolate(knots, from, theta) +
+                       lambda * (interpolate(knots, to, theta) -
+                                 interpolate(knots, from, theta));
+              });
+            solved = problem.run(!first).converged;
+            if (!solved)
+              {
+                problem.set_solution(saved);
+                AssertThrow(!first,
+                            ExcMessage("the initial contact pressure cannot "
+                                       "be applied (Newton failed)"));
+                for (unsigned int k = 0; k < m; ++k)
+                  a[k] = f_applied[k] + 0.5 * (a[k] - f_applied[k]);
+              }
+          }
+        if (!solved)
+          {
+            result.message = "the cover cannot carry the pressure update of "
+                             "contact iteration " +
+                             std::to_string(it);
+            break;
+          }
+        first     = false;
+        f_applied = a;
+        problem.set_pressure(
+          [knots, a](const double theta, const double lambda) {
+            return lambda * interpolate(knots, a, theta);
+          });
+
+        // Gaps at the equation points.
+        const auto   U        = nodal_values(problem.current_solution());
+        const double u0       = -U[0][0];
+        auto         position = [&](const unsigned int i) {
+          return Point<dim>(nodes[i].X + U[i]);
+        };
+        const Point<dim> x_theta0 =
+          Point<dim>((1 - weight) * position(left) + weight * position(above));
+        const unsigned int  n_eq = m; // nodes 1..m-1 and theta0
+        std::vector<double> g(n_eq);
+        for (unsigned int j = 1; j < m; ++j)
+          g[j - 1] = indenter.gap(position(j), u0);
+        g[n_eq - 1] = indenter.gap(x_theta0, u0);
+
+        double conformity = std::abs(g[n_eq - 1]);
+        for (unsigned int i = 1; i < above; ++i)
+          conformity =
+            std::max(conformity, std::abs(indenter.gap(position(i), u0)));
+        conformity /= u0;
+        double min_gap_outside = std::numeric_limits<double>::max();
+        for (unsigned int i = above; i < nodes.size(); ++i)
+          min_gap_outside =
+            std::min(min_gap_outside, indenter.gap(position(i), u0));
+
+        result.iterations    = it;
+        result.indentation   = u0;
+        result.conformity    = conformity;
+        result.penetration   = std::max(0., -min_gap_outside) / u0;
+        result.nip_load      = -2. * problem.load_resultant(1.)[0];
+        result.min_pressure  = *std::min_element(a.begin(), a.end());
+        result.peak_pressure = *std::max_element(a.begin(), a.end());
+        pcout << std::setw(5) << it << std::scientific << std::setprecision(3)
+              << std::setw(22) << conformity << std::fixed
+              << std::setprecision(6) << std::setw(11) << u0 << std::setw(13)
+              << result.nip_load << std::setw(13) << result.min_pressure
+              << std::endl;
+        if (!(u0 > 0))
+          {
+            result.message = "the indentation is not positive";
+            break;
+          }
+        if (conformity < parameters.contact.tolerance)
+          {
+            result.converged = true;
+            break;
+          }
+
+        // Sensitivities: one factorisation, one solve per parameter.
+        problem.assemble(1., true);
+        problem.factorize_tangent();
+        Eigen::MatrixXd J(n_eq, m);
+        for (unsigned int k = 0; k < m; ++k)
+          {
+            TrilinosWrappers::MPI::Vector rhs =
+              problem.pressure_load_derivative([&knots, k](const double theta) {
+                return hat(knots, k, theta);
+              });
+            rhs *= -1.;
+            du = 0;
+            problem.solve_with_tangent(rhs, du);
+            const auto   dU  = nodal_values(du);
+            const double du0 = -dU[0][0];
+            auto dgap = [&](const Point<dim> &x, const Tensor<1, dim> &dx) {
+              return indenter.gap_gradient(x, u0) * dx +
+                     indenter.gap_derivative_u0(x, u0) * du0;
+            };
+            for (unsigned int j = 1; j < m; ++j)
+              J(j - 1, k) = dgap(position(j), dU[j]);
+            J(n_eq - 1, k) =
+              dgap(x_theta0, (1 - weight) * dU[left] + weight * dU[above]);
+          }
+        Eigen::VectorXd rhs(n_eq);
+        for (unsigned int j = 0; j < n_eq; ++j)
+          rhs(j) = -g[j];
+        const Eigen::VectorXd delta = J.colPivHouseholderQr().solve(rhs);
+        for (unsigned int k = 0; k < m; ++k)
+          a[k] += delta(k);
+      }
+
+    result.knots  = knots;
+    result.values = f_applied;
+    if (!result.converged && result.message.empty())
+      result.message = "the contact iteration did not reach the conformity "
+                       "tolerance " +
+                       std::to_string(parameters.contact.tolerance) + " in " +
+                       std::to_string(parameters.contact.max_iterations) +
+                       " iterations (reached " +
+                       std::to_string(result.conformity) + ")";
+    if (result.converged && result.min_pressure < 0)
+      {
+        result.converged = false;
+        result.message   = "the contact pressure is negative somewhere (min " +
+                         std::to_string(result.min_pressure) +
+                         " MPa): the surface would separate inside the zone";
+      }
+    if (result.converged && result.penetration > parameters.contact.tolerance)
+      {
+        result.converged = false;
+        result.message   = "the surface penetrates the indenter outside the "
+                           "zone by " +
+                         std::to_string(result.penetration) +
+                         " u0: theta0 is too small for this load";
+      }
+    return result;
+  }
+
+  void
+  write_contact_results(const ContactResult &result,
+                        const std::string   &directory)
+  {
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+      return;
+    constexpr double deg = 180. / numbers::PI;
+    std::filesystem::create_directories(directory);
+    write_atomically(directory + "/contact.txt", [&](std::ostream &out) {
+      out << std::setprecision(8)
+          << "# rollnip contact (Batra's inverse iteration); mm, MPa, N/mm\n"
+          << "status = " << (result.converged ? "converged" : "stopped")
+          << '\n';
+      if (!result.converged)
+        out << "stopped_because = " << result.message << '\n';
+      out << "half_nip_angle_theta0_deg = " << result.theta0 * deg << '\n'
+          << "contact_iterations = " << result.iterations << '\n'
+          << "indentation_u0_mm = " << result.indentation << '\n'
+          << "nip_load_P_N_per_mm = " << result.nip_load << '\n'
+          << "peak_pressure_MPa = " << result.peak_pressure << '\n'
+          << "min_pressure_MPa = " << result.min_pressure << '\n'
+          << "conformity_max_gap_over_u0 = " << result.conformity << '\n'
+          << "penetration_outside_over_u0 = " << result.penetration << '\n';
+    });
+    write_atomically(directory + "/contact_pressure.csv",
+                     [&](std::ostream &out) {
+                       out << "theta_deg,pressure_MPa\n"
+                           << std::setprecision(10);
+                       for (unsigned int k = 0; k < result.knots.size(); ++k)
+                         out
+                           << result.knots[k] * deg << ','
+                           << (k < result.values.size() ? result.values[k] : 0.)
+                           << '\n';
+                     });
+  }
+} // namespace rollnip
