@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# Installs what rollnip needs (Debian packages), then configures and builds it
+# in build/. Safe to run again: apt is skipped when every package is already
+# installed, cmake configures only once, and the build is incremental.
+#
+# Usage: bash scripts/setup.sh        (from any directory)
+set -euo pipefail
+
+repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$repo_root"
+
+packages=(
+  libdeal.ii-dev  # deal.II 9.4 with Trilinos, p4est, MPI
+  libeigen3-dev   # small dense systems
+  gmsh            # meshes/*.geo
+  numdiff         # test output comparison
+  cmake
+  g++
+  make
+  openmpi-bin     # mpirun, for parallel runs and the MPI tests
+  gnuplot-nox     # plots of the CSV tables
+  python3
+)
+
+is_installed() {
+  [ "$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null || true)" = \
+    "install ok installed" ]
+}
+
+missing=()
+for p in "${packages[@]}"; do
+  is_installed "$p" || missing+=("$p")
+done
+
+if [ "${#missing[@]}" -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  if [ "$(id -u)" -eq 0 ]; then
+    as_root=()
+  elif command -v sudo >/dev/null 2>&1; then
+    as_root=(sudo)
+  else
+    echo "setup: error: need root or sudo to install ${missing[*]}" >&2
+    exit 1
+  fi
+  ${as_root[@]+"${as_root[@]}"} env DEBIAN_FRONTEND=noninteractive apt-get update
+  ${as_root[@]+"${as_root[@]}"} env DEBIAN_FRONTEND=noninteractive \
+    apt-get install -y --no-install-recommends "${missing[@]}"
+else
+  echo "setup: all required packages are installed"
+fi
+
+if [ ! -f build/CMakeCache.txt ]; then
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+fi
+cmake --build build -j"$(nproc)"
+echo "setup: built $repo_root/build/rollnip"
