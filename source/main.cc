@@ -6,6 +6,7 @@
 #include <rollnip/run_errors.h>
 
 #include <iostream>
+#include <memory>
 #include <string>
 
 namespace
@@ -91,37 +92,51 @@ main(int argc, char **argv)
   return run_guarded(root, [&]() {
     Parameters::AllParameters parameters;
     parameters.read(file);
-    RollProblem problem(parameters, MPI_COMM_WORLD);
-    problem.setup();
-    if (validate_only)
+    // Destroyed inside the handler below when something throws, so that
+    // its timer does not report on an exception still in flight.
+    std::unique_ptr<RollProblem> problem =
+      std::make_unique<RollProblem>(parameters, MPI_COMM_WORLD);
+    try
       {
-        if (root)
-          std::cout << "rollnip: '" << file << "' is valid" << std::endl;
+        problem->setup();
+        if (validate_only)
+          {
+            if (root)
+              std::cout << "rollnip: '" << file << "' is valid" << std::endl;
+            problem->silence_timer();
+            return 0;
+          }
+        RunStatus status;
+        if (parameters.contact.mode == Parameters::ContactMode::nip_angle)
+          {
+            InverseContact      contact(*problem, parameters);
+            const ContactResult result =
+              contact.solve(parameters.contact.theta0);
+            status.converged     = result.converged;
+            status.load_fraction = 1.;
+            status.message       = "contact: " + result.message;
+            write_contact_results(result, parameters.output.directory);
+            if (parameters.output.write_vtu)
+              problem->write_vtu(9999, 1.);
+          }
+        else
+          status = problem->run();
+        problem->write_results(status);
+        if (!status.converged)
+          {
+            if (root)
+              std::cerr << "rollnip: error: " << status.message
+                        << "; results of that state are in '"
+                        << parameters.output.directory << "'" << std::endl;
+            return 1;
+          }
         return 0;
       }
-    RunStatus status;
-    if (parameters.contact.mode == Parameters::ContactMode::nip_angle)
+    catch (...)
       {
-        InverseContact      contact(problem, parameters);
-        const ContactResult result = contact.solve(parameters.contact.theta0);
-        status.converged           = result.converged;
-        status.load_fraction       = 1.;
-        status.message             = "contact: " + result.message;
-        write_contact_results(result, parameters.output.directory);
-        if (parameters.output.write_vtu)
-          problem.write_vtu(9999, 1.);
+        problem->silence_timer();
+        problem.reset();
+        throw;
       }
-    else
-      status = problem.run();
-    problem.write_results(status);
-    if (!status.converged)
-      {
-        if (root)
-          std::cerr << "rollnip: error: " << status.message
-                    << "; results of that state are in '"
-                    << parameters.output.directory << "'" << std::endl;
-        return 1;
-      }
-    return 0;
   });
 }

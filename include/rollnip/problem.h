@@ -123,6 +123,13 @@ namespace rollnip
     double
     assemble(const double load_fraction, const bool with_matrix);
 
+    /// No timing table when the object goes away (after an error).
+    void
+    silence_timer()
+    {
+      timer.disable_output();
+    }
+
     /// Whether run() prints one line per load step (on by default).
     void
     set_step_log(const bool on)

@@ -2,6 +2,7 @@
 
 #include <rollnip/loading/pressure_load.h>
 
+#include <iostream>
 #include <map>
 
 namespace rollnip
@@ -16,6 +17,16 @@ namespace rollnip
       {"R0", geometry.outer_radius},
       {"R1", geometry.inner_radius},
       {"pi", numbers::PI}};
+    // muparser's diagnostics go to std::cerr; the message below replaces
+    // them with one line.
+    struct SilenceCerr
+    {
+      std::streambuf *saved = std::cerr.rdbuf(nullptr);
+      ~SilenceCerr()
+      {
+        std::cerr.rdbuf(saved);
+      }
+    } silence;
     try
       {
         function->initialize("theta", load.pressure_function, constants);

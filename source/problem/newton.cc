@@ -213,9 +213,10 @@ namespace rollnip
               {
                 msg << "the load cannot be reached: Newton failed at load "
                        "fraction "
-                    << target << " after " << cutbacks_in_a_row - 1
-                    << " cutbacks (increment now " << increment
-                    << "); the last converged load fraction is " << lambda;
+                    << target << " after " << cutbacks_in_a_row
+                    << " failed attempt(s) in a row (increment now "
+                    << increment << "); the last converged load fraction is "
+                    << lambda;
                 status.message = msg.str();
                 break;
               }
@@ -224,6 +225,10 @@ namespace rollnip
                   << ", retrying with increment " << increment << std::endl;
           }
       }
+    // A stopped run still leaves the last converged state for ParaView.
+    if (lambda < 1. - 1e-12 && step > 0 && parameters.output.write_vtu &&
+        !parameters.output.vtu_every_step)
+      write_vtu(step, lambda);
     status.converged     = lambda >= 1. - 1e-12;
     status.load_fraction = lambda;
     return status;

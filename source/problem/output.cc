@@ -12,6 +12,7 @@
 
 #include <filesystem>
 #include <iomanip>
+#include <limits>
 
 namespace rollnip
 {
@@ -158,11 +159,10 @@ namespace rollnip
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;
     std::filesystem::create_directories(parameters.output.directory);
+    // No TimerOutput::Scope here: its timer is collective and only rank 0
+    // gets this far.
     if (parameters.output.write_csv)
-      {
-        TimerOutput::Scope t(timer, "output");
-        write_csv(data);
-      }
+      write_csv(data);
     write_summary(status, data, resultant, u_r);
   }
 
@@ -229,7 +229,9 @@ namespace rollnip
         peak_applied = std::max(peak_applied, p.applied_pressure);
         peak_normal  = std::max(peak_normal, p.normal_pressure);
       }
-    double bond_rr_min = 0, bond_rr_max = 0, bond_rt = 0;
+    double bond_rr_min = std::numeric_limits<double>::max();
+    double bond_rr_max = -std::numeric_limits<double>::max();
+    double bond_rt     = 0;
     for (const auto &p : data.bond)
       {
         bond_rr_min = std::min(bond_rr_min, p.sigma_rr);

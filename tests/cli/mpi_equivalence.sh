@@ -1,0 +1,117 @@
+#!/usr/bin/env bash
+# One process and two MPI processes must give the same results.
+#
+# Usage: bash mpi_equivalence.sh ROLLNIP MPIEXEC NUMDIFF BATRA_PRM
+#   BATRA_PRM  parameters/batra1980.prm (the paper's pressure scene)
+#
+# Runs the scene of BATRA_PRM on a smaller mesh (the overrides are appended
+# to a copy: a later 'set' wins) once without mpirun and once with
+# 'MPIEXEC -np 2', each with its own output directory, then compares with
+# numdiff (relative tolerance 1e-8, absolute 1e-12, fields split at blanks,
+# commas and '='): summary.txt without the lines that must differ (timings,
+# mpi_processes), outer_surface.csv and bond_surface.csv.
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+
+[ $# -eq 4 ] ||
+  fail "usage: mpi_equivalence.sh ROLLNIP MPIEXEC NUMDIFF BATRA_PRM"
+rollnip="$1"
+mpiexec="$2"
+numdiff="$3"
+batra="$4"
+require_executable rollnip "$rollnip"
+require_executable "mpiexec (MPIEXEC_EXECUTABLE)" "$mpiexec"
+require_executable "numdiff (needed to compare the results)" "$numdiff"
+[ -f "$batra" ] || fail "parameter file '$batra' not found"
+start_test mpi_equivalence
+
+# Open MPI refuses to start as root unless told (containers, CI).
+if [ "$(id -u)" -eq 0 ]; then
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+fi
+mpi_flags=()
+mpi_version="$("$mpiexec" --version 2>&1 || true)"
+if [[ "$mpi_version" == *"Open MPI"* || "$mpi_version" == *OpenRTE* ||
+      "$mpi_version" == *open-mpi* ]]; then
+  mpi_flags+=(--oversubscribe) # two ranks even on a one-core machine
+fi
+
+make_prm()
+{
+  cp "$batra" "$1"
+  cat >> "$1" <<PRM
+
+# --- overrides of tests/cli/mpi_equivalence.sh: a small mesh, own output
+subsection Mesh
+  set Radial cells          = 3
+  set Circumferential cells = 8
+  set Global refinements    = 1
+end
+subsection Output
+  set Directory    = $2
+  set Print timing = false
+end
+PRM
+}
+make_prm serial.prm out_serial
+make_prm parallel.prm out_parallel
+
+echo "running: rollnip serial.prm"
+"$rollnip" serial.prm > serial.log 2>&1 ||
+  { cat serial.log; fail "the serial run failed"; }
+pass "serial run finished"
+# A deadlock must show as one, not only as ctest's timeout.
+limit=120
+guard=()
+if command -v timeout > /dev/null; then
+  guard=(timeout --kill-after=10 "$limit")
+fi
+echo "running: $mpiexec ${mpi_flags[*]} -np 2 rollnip parallel.prm"
+rc=0
+"${guard[@]}" "$mpiexec" "${mpi_flags[@]}" -np 2 "$rollnip" parallel.prm \
+  > parallel.log 2>&1 || rc=$?
+if [ "$rc" -ne 0 ]; then
+  cat parallel.log
+  if [ "$rc" -eq 124 ] || [ "$rc" -eq 137 ]; then
+    fail "the run on 2 MPI processes did not finish within $limit s (deadlock?)"
+  fi
+  fail "the run on 2 MPI processes failed (exit code $rc)"
+fi
+pass "run on 2 MPI processes finished"
+
+for dir in out_serial out_parallel; do
+  [ -f "$dir/summary.txt" ] || fail "$dir/summary.txt missing"
+done
+[ "$(summary_value out_serial/summary.txt mpi_processes)" -eq 1 ] ||
+  fail "the serial run did not report mpi_processes = 1"
+[ "$(summary_value out_parallel/summary.txt mpi_processes)" -eq 2 ] ||
+  fail "the parallel run did not report mpi_processes = 2"
+pass "summary.txt reports mpi_processes = 1 and 2"
+[ "$(summary_value out_serial/summary.txt status)" = converged ] ||
+  fail "the serial run did not converge"
+pass "status = converged"
+
+# Everything except the timings and the process count must agree.
+for dir in out_serial out_parallel; do
+  grep -v -E '^(wall_time_s|time_[a-z_]*_s|mpi_processes) =' \
+    "$dir/summary.txt" > "$dir/summary_compared.txt"
+done
+
+compare()
+{
+  if "$numdiff" --quiet -r 1e-8 -a 1e-12 -s $' \t\n,=' \
+       "out_serial/$1" "out_parallel/$1" > /dev/null; then
+    pass "$1: serial and 2 processes agree ($(wc -l < "out_serial/$1") lines, rel 1e-8, abs 1e-12)"
+  else
+    "$numdiff" -r 1e-8 -a 1e-12 -s $' \t\n,=' \
+      "out_serial/$1" "out_parallel/$1" | tail -n 30 || true
+    fail "$1 differs between 1 and 2 MPI processes"
+  fi
+}
+compare summary_compared.txt
+compare outer_surface.csv
+compare bond_surface.csv
+echo "serial:   P = $(summary_value out_serial/summary.txt nip_load_P_N_per_mm) N/mm," \
+  "u0 = $(summary_value out_serial/summary.txt indentation_u0_mm) mm"
+echo "parallel: P = $(summary_value out_parallel/summary.txt nip_load_P_N_per_mm) N/mm," \
+  "u0 = $(summary_value out_parallel/summary.txt indentation_u0_mm) mm"
