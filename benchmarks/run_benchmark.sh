@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Times rollnip on the default pressure scene (parameters/batra1980.prm) at
+# Times rollnip on the default pressure scene (parameters/parabolic_pressure.prm) at
 # global refinements 0, 1, 2 and 3, and prints one table row per level.
 #
 # Usage: bash benchmarks/run_benchmark.sh [N]     (N timed runs per level, default 3)
@@ -34,7 +34,7 @@ case "$n_repeats" in
     ;;
 esac
 
-base_prm="parameters/batra1980.prm"
+base_prm="parameters/parabolic_pressure.prm"
 rollnip="build/rollnip"
 levels=(0 1 2 3)
 

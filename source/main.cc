@@ -1,6 +1,6 @@
 #include <deal.II/base/mpi.h>
 
-#include <rollnip/contact/inverse_contact.h>
+#include <rollnip/contact/nip_study.h>
 #include <rollnip/parameters.h>
 #include <rollnip/problem.h>
 #include <rollnip/run_errors.h>
@@ -92,6 +92,9 @@ main(int argc, char **argv)
   return run_guarded(root, [&]() {
     Parameters::AllParameters parameters;
     parameters.read(file);
+    if (parameters.contact.mode != Parameters::ContactMode::none &&
+        !validate_only)
+      return run_nip_study(parameters);
     // Destroyed inside the handler below when something throws, so that
     // its timer does not report on an exception still in flight.
     std::unique_ptr<RollProblem> problem =
@@ -106,21 +109,7 @@ main(int argc, char **argv)
             problem->silence_timer();
             return 0;
           }
-        RunStatus status;
-        if (parameters.contact.mode == Parameters::ContactMode::nip_angle)
-          {
-            InverseContact      contact(*problem, parameters);
-            const ContactResult result =
-              contact.solve(parameters.contact.theta0);
-            status.converged     = result.converged;
-            status.load_fraction = 1.;
-            status.message       = "contact: " + result.message;
-            write_contact_results(result, parameters.output.directory);
-            if (parameters.output.write_vtu)
-              problem->write_vtu(9999, 1.);
-          }
-        else
-          status = problem->run();
+        RunStatus status = problem->run();
         problem->write_results(status);
         if (!status.converged)
           {

@@ -475,11 +475,19 @@ namespace rollnip
       declare_documented(prm,
                          "Mode",
                          "none",
-                         Patterns::Selection("none|nip angle"),
-                         "none: apply Load/Pressure function; nip angle: "
-                         "Batra's inverse iteration, find the contact "
-                         "pressure for the half nip angle theta0 given below "
-                         "(the outer arc must have condition 'pressure')");
+                         Patterns::Selection("none|nip angle|load|indentation"),
+                         "none: apply Load/Pressure function; otherwise "
+                         "contact with the indenter (the outer arc must have "
+                         "condition 'pressure'), controlled by: nip angle "
+                         "(Batra's inverse iteration, theta0 given), load "
+                         "(P given) or indentation (u0 given)");
+      declare_documented(prm,
+                         "Values",
+                         "8",
+                         Patterns::List(Patterns::Double(0.), 1),
+                         "The controlled quantity, one nip per value, "
+                         "comma-separated (several make a sweep): theta0 "
+                         "[deg], P [N/mm, two-sided] or u0 [mm] by Mode");
       declare_documented(prm,
                          "Indenter radius",
                          "76.2",
@@ -487,24 +495,30 @@ namespace rollnip
                          "Rbar, radius of the rigid indenter [mm]; 'inf' for "
                          "a flat rigid plane (two equal rolls by symmetry)");
       declare_documented(prm,
-                         "Half nip angle",
-                         "8",
-                         Patterns::Double(0.),
-                         "theta0, reference half angle of the contact zone "
-                         "[deg]; any real value, not tied to mesh nodes");
-      declare_documented(prm,
                          "Conformity tolerance",
-                         "1e-4",
+                         "1e-6",
                          Patterns::Double(0.),
                          "Largest distance of a contact-zone surface node "
                          "from the indenter, as a fraction of the "
                          "indentation u0 (the paper accepted 1e-2)");
       declare_documented(prm,
+                         "Control tolerance",
+                         "1e-6",
+                         Patterns::Double(0.),
+                         "Relative tolerance on P or u0 for Mode = load or "
+                         "indentation");
+      declare_documented(prm,
                          "Maximum iterations",
                          "25",
                          Patterns::Integer(1),
                          "Contact (Newton) iterations on the pressure "
-                         "parameters");
+                         "parameters, and outer iterations on theta0");
+      declare_documented(prm,
+                         "Compare with linear theory",
+                         "true",
+                         Patterns::Bool(),
+                         "Also solve each nip (same theta0) with the linear "
+                         "theory and report it beside the nonlinear one");
       prm.leave_subsection();
     }
 
@@ -512,8 +526,15 @@ namespace rollnip
     Contact::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Contact");
-      mode = prm.get("Mode") == "nip angle" ? ContactMode::nip_angle
-                                            : ContactMode::none;
+      const std::string m = prm.get("Mode");
+      mode = m == "nip angle"   ? ContactMode::nip_angle :
+             m == "load"        ? ContactMode::load :
+             m == "indentation" ? ContactMode::indentation :
+                                  ContactMode::none;
+      values.clear();
+      for (const auto &v : Utilities::split_string_list(prm.get("Values")))
+        values.push_back(std::stod(v) *
+                         (mode == ContactMode::nip_angle ? degree : 1.));
       const std::string r = prm.get("Indenter radius");
       if (r == "inf" || r == "infinity")
         indenter_radius = std::numeric_limits<double>::infinity();
@@ -533,9 +554,10 @@ namespace rollnip
                                  "number of mm or 'inf', got '" +
                                  r + "'"));
         }
-      theta0         = prm.get_double("Half nip angle") * degree;
-      tolerance      = prm.get_double("Conformity tolerance");
-      max_iterations = prm.get_integer("Maximum iterations");
+      tolerance         = prm.get_double("Conformity tolerance");
+      control_tolerance = prm.get_double("Control tolerance");
+      max_iterations    = prm.get_integer("Maximum iterations");
+      compare_linear    = prm.get_bool("Compare with linear theory");
       prm.leave_subsection();
     }
 
@@ -628,10 +650,12 @@ namespace rollnip
                         BoundaryCondition::pressure,
                       ExcMessage("Contact/Mode needs Boundary conditions/Outer "
                                  "arc (id 1) = pressure"));
-          AssertThrow(contact.theta0 > 0 &&
-                        contact.theta0 < geometry.sector_angle,
-                      ExcMessage("Contact/Half nip angle must lie in (0, "
-                                 "Geometry/Sector angle)"));
+          for (const double v : contact.values)
+            AssertThrow(v > 0 && (contact.mode != ContactMode::nip_angle ||
+                                  v < geometry.sector_angle),
+                        ExcMessage("Contact/Values: every value must be "
+                                   "positive (and, for nip angles, below "
+                                   "Geometry/Sector angle)"));
         }
       AssertThrow(!output.directory.empty(),
                   ExcMessage("Output/Directory must not be empty"));

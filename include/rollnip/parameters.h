@@ -8,6 +8,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 /**
  * The run-time parameters of rollnip, one struct per subsection of the .prm
@@ -184,17 +185,23 @@ namespace rollnip
 
     enum class ContactMode
     {
-      none,     ///< the pressure of Load/Pressure function is applied
-      nip_angle ///< Batra's inverse iteration: theta0 given, f found
+      none,       ///< the pressure of Load/Pressure function is applied
+      nip_angle,  ///< Batra's inverse iteration: theta0 given, f found
+      load,       ///< P given: theta0 found by an outer iteration
+      indentation ///< u0 given: theta0 found by an outer iteration
     };
 
     struct Contact
     {
-      ContactMode  mode;
-      double       indenter_radius; ///< Rbar [mm]; infinity: a flat plane
-      double       theta0;          ///< half nip angle [rad]
-      double       tolerance;       ///< conformity, as a fraction of u0
-      unsigned int max_iterations;
+      ContactMode mode;
+      double      indenter_radius; ///< Rbar [mm]; infinity: flat
+      /// The controlled values, one nip each: theta0 [rad], P [N/mm] or
+      /// u0 [mm] by mode.
+      std::vector<double> values;
+      double              tolerance; ///< conformity, as a fraction of u0
+      double              control_tolerance; ///< relative, on P or u0
+      unsigned int        max_iterations;
+      bool                compare_linear;
 
       static void
       declare(ParameterHandler &prm);

@@ -82,9 +82,11 @@ namespace rollnip
 
     /// Ramps the load from 0 to 1 with adaptive steps; writes output for
     /// converged steps; never throws for a load it cannot reach but
-    /// reports it in the status (newton.cc).
+    /// reports it in the status (newton.cc). The first increment is
+    /// @p first_increment if positive, else 1 / (Initial steps).
     RunStatus
-    run(const bool from_current_state = false);
+    run(const bool   from_current_state = false,
+        const double first_increment    = 0);
 
     /**
      * Replaces the follower pressure of Load/Pressure function, by default
@@ -130,7 +132,18 @@ namespace rollnip
       timer.disable_output();
     }
 
-    /// Whether run() prints one line per load step (on by default).
+    /// Where write_vtu() and write_results() put files (default
+    /// Output/Directory); a new directory starts a new PVD record.
+    void
+    set_output_directory(const std::string &directory)
+    {
+      if (directory != output_directory)
+        pvd_records.clear();
+      output_directory = directory;
+    }
+
+    /// Whether run() prints one line per load step and writes VTU (on by
+    /// default; the contact iteration turns it off for its inner solves).
     void
     set_step_log(const bool on)
     {
@@ -264,8 +277,9 @@ namespace rollnip
     TrilinosWrappers::MPI::Vector                   system_rhs; ///< residual R
     TrilinosWrappers::MPI::Vector external_force; ///< surface load part
 
-    double domain_area = 0;
-    bool   log_steps   = true;
+    std::string output_directory;
+    double      domain_area = 0;
+    bool        log_steps   = true;
 
     std::vector<NewtonRecord>                   newton_records;
     std::vector<StepRecord>                     step_records;

@@ -103,7 +103,8 @@ namespace rollnip
   ContactResult
   InverseContact::solve(const double theta0)
   {
-    collect_surface_nodes();
+    if (nodes.empty())
+      collect_surface_nodes();
     problem.set_step_log(false);
     ContactResult result;
     result.theta0 = theta0;
@@ -144,18 +145,27 @@ namespace rollnip
     const double G  = 2 * (parameters.material.C1 + parameters.material.C2);
     const double R_eff =
       indenter.is_flat() ? R0 : 1. / (1. / R0 + 1. / indenter.radius());
-    const double        half_width = R0 * std::sin(theta0);
-    const double        p_hertz    = 4 * G * half_width / (2 * R_eff);
-    std::vector<double> a(m);
+    const double half_width = R0 * std::sin(theta0);
+    const double p_hertz    = 4 * G * half_width / (2 * R_eff);
+    // Warm start from the pressure of the current state, stretched to the
+    // new zone and scaled as in Hertz (peak pressure ~ nip width).
+    std::vector<double> a(m), f_from(m, 0.);
     for (unsigned int k = 0; k < m; ++k)
-      a[k] =
-        p_hertz * std::sqrt(std::max(0., 1 - std::pow(knots[k] / theta0, 2)));
+      {
+        if (applied_pressure)
+          {
+            f_from[k] = applied_pressure(knots[k]);
+            a[k]      = applied_pressure(knots[k] * applied_theta0 / theta0) *
+                   theta0 / applied_theta0;
+          }
+        else
+          a[k] = p_hertz *
+                 std::sqrt(std::max(0., 1 - std::pow(knots[k] / theta0, 2)));
+      }
 
-    std::vector<double>           f_applied(m, 0.); // the pressure of the state
     TrilinosWrappers::MPI::Vector saved(
       problem.current_solution().locally_owned_elements(), MPI_COMM_WORLD);
     TrilinosWrappers::MPI::Vector du(saved);
-    bool                          first = true;
 
     pcout << "Contact iteration, theta0 = " << theta0 * 180 / numbers::PI
           << " deg, " << m << " pressure parameters" << std::endl
@@ -168,23 +178,26 @@ namespace rollnip
         bool solved = false;
         for (unsigned int attempt = 0; attempt < 6 && !solved; ++attempt)
           {
-            saved                          = problem.current_solution();
-            const std::vector<double> from = f_applied, to = a;
+            saved = problem.current_solution();
+            const std::function<double(double)> from = applied_pressure;
+            const std::vector<double>           to   = a;
             problem.set_pressure(
               [knots, from, to](const double theta, const double lambda) {
-                return interpolate(knots, from, theta) +
-                       lambda * (interpolate(knots, to, theta) -
-                                 interpolate(knots, from, theta));
+                const double f0 = from ? from(theta) : 0.;
+                return f0 + lambda * (interpolate(knots, to, theta) - f0);
               });
-            solved = problem.run(!first).converged;
+            // From a converged contact state the change is small: try the
+            // whole update in one step (cut back if needed).
+            solved = applied_pressure ? problem.run(true, 1.).converged
+                                      : problem.run(false).converged;
             if (!solved)
               {
                 problem.set_solution(saved);
-                AssertThrow(!first,
+                AssertThrow(applied_pressure,
                             ExcMessage("the initial contact pressure cannot "
                                        "be applied (Newton failed)"));
                 for (unsigned int k = 0; k < m; ++k)
-                  a[k] = f_applied[k] + 0.5 * (a[k] - f_applied[k]);
+                  a[k] = f_from[k] + 0.5 * (a[k] - f_from[k]);
               }
           }
         if (!solved)
@@ -194,8 +207,13 @@ namespace rollnip
                              std::to_string(it);
             break;
           }
-        first     = false;
-        f_applied = a;
+        applied_pressure = [knots, a](const double theta) {
+          return interpolate(knots, a, theta);
+        };
+        applied_theta0 = theta0;
+        for (unsigned int k = 0; k < m; ++k)
+          f_from[k] = a[k];
+        result.values = a;
         problem.set_pressure(
           [knots, a](const double theta, const double lambda) {
             return lambda * interpolate(knots, a, theta);
@@ -225,6 +243,12 @@ namespace rollnip
           min_gap_outside =
             std::min(min_gap_outside, indenter.gap(position(i), u0));
 
+        // The deformed contact arc from the line of centres to theta0.
+        result.half_arc = 0;
+        for (unsigned int i = 1; i <= left; ++i)
+          result.half_arc += position(i).distance(position(i - 1));
+        result.half_arc += x_theta0.distance(position(left));
+        result.half_chord    = x_theta0[1];
         result.iterations    = it;
         result.indentation   = u0;
         result.conformity    = conformity;
@@ -280,8 +304,7 @@ namespace rollnip
           a[k] += delta(k);
       }
 
-    result.knots  = knots;
-    result.values = f_applied;
+    result.knots = knots;
     if (!result.converged && result.message.empty())
       result.message = "the contact iteration did not reach the conformity "
                        "tolerance " +

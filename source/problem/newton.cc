@@ -157,14 +157,16 @@ namespace rollnip
   }
 
   RunStatus
-  RollProblem::run(const bool from_current_state)
+  RollProblem::run(const bool from_current_state, const double first_increment)
   {
     wall_clock.restart();
     const auto &ls = parameters.load_stepping;
     RunStatus   status;
     double      lambda = 0;
     // Linear theory: the whole load in one step (doc/intro.md, section 2).
-    double increment  = material.is_linear() ? 1. : 1. / ls.n_initial_steps;
+    double       increment = material.is_linear()  ? 1.
+                             : first_increment > 0 ? first_increment
+                                                   : 1. / ls.n_initial_steps;
     unsigned int step = 0, cutbacks_in_a_row = 0;
 
     if (!from_current_state)
@@ -196,7 +198,7 @@ namespace rollnip
                     << r.u_r_centre << std::setw(11) << std::setprecision(4)
                     << r.nip_load << std::setw(11) << std::setprecision(2)
                     << r.wall_time << std::endl;
-            if (parameters.output.write_vtu &&
+            if (log_steps && parameters.output.write_vtu &&
                 (parameters.output.vtu_every_step || lambda >= 1. - 1e-12))
               write_vtu(step, lambda);
             if (r.newton_iterations <= ls.fast_newton_iterations)
@@ -226,8 +228,8 @@ namespace rollnip
           }
       }
     // A stopped run still leaves the last converged state for ParaView.
-    if (lambda < 1. - 1e-12 && step > 0 && parameters.output.write_vtu &&
-        !parameters.output.vtu_every_step)
+    if (lambda < 1. - 1e-12 && step > 0 && log_steps &&
+        parameters.output.write_vtu && !parameters.output.vtu_every_step)
       write_vtu(step, lambda);
     status.converged     = lambda >= 1. - 1e-12;
     status.load_fraction = lambda;

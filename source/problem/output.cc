@@ -35,7 +35,7 @@ namespace rollnip
   RollProblem::write_vtu(const unsigned int step, const double load_fraction)
   {
     TimerOutput::Scope t(timer, "output");
-    const std::string &dir = parameters.output.directory;
+    const std::string &dir = output_directory;
     const unsigned int rank =
       Utilities::MPI::this_mpi_process(mpi_communicator);
     if (rank == 0)
@@ -158,7 +158,7 @@ namespace rollnip
     const double         u_r       = radial_displacement_on_line_of_centres();
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;
-    std::filesystem::create_directories(parameters.output.directory);
+    std::filesystem::create_directories(output_directory);
     // No TimerOutput::Scope here: its timer is collective and only rank 0
     // gets this far.
     if (parameters.output.write_csv)
@@ -169,7 +169,7 @@ namespace rollnip
   void
   RollProblem::write_csv(const SurfaceData &data) const
   {
-    const std::string &dir = parameters.output.directory;
+    const std::string &dir = output_directory;
     constexpr double   deg = 180. / numbers::PI;
     write_atomically(dir + "/outer_surface.csv", [&](std::ostream &out) {
       out << "theta_deg,X_mm,Y_mm,x_mm,y_mm,u_r_mm,u_theta_mm,"
@@ -248,53 +248,51 @@ namespace rollnip
     };
     const auto &e = data.extremes;
 
-    write_atomically(
-      parameters.output.directory + "/summary.txt", [&](std::ostream &out) {
-        out << std::setprecision(8);
-        out << "# rollnip summary (lengths mm, stresses MPa, loads N/mm)\n";
-        out << "status = " << (status.converged ? "converged" : "stopped")
-            << '\n';
-        if (!status.converged)
-          out << "stopped_because = " << status.message << '\n';
-        out << "theory = " << (material.is_linear() ? "linear" : "nonlinear")
-            << '\n'
-            << "element = " << fe->get_name() << '\n'
-            << "cells = " << triangulation.n_global_active_cells() << '\n'
-            << "dofs = " << dof_handler.n_dofs() << '\n'
-            << "mpi_processes = "
-            << Utilities::MPI::n_mpi_processes(mpi_communicator) << '\n'
-            << "load_fraction = " << status.load_fraction << '\n'
-            << "load_steps = " << step_records.size() << '\n'
-            << "newton_iterations = " << n_newton << '\n'
-            << "cutbacks = " << n_cutbacks << '\n'
-            << "assemblies = " << n_assemblies << '\n'
-            << "linear_solves = " << n_linear_solves << '\n'
-            << "load_resultant_x_N_per_mm = " << R[0] << '\n'
-            << "load_resultant_y_N_per_mm = " << R[1] << '\n'
-            << "nip_load_P_N_per_mm = " << (two_sided ? -2. : -1.) * R[0]
-            << '\n'
-            << "u_r_at_R0_0_mm = " << u_r << '\n'
-            << "indentation_u0_mm = " << -u_r << '\n'
-            << "peak_applied_pressure_MPa = " << peak_applied << '\n'
-            << "peak_normal_pressure_from_stress_MPa = " << peak_normal << '\n'
-            << "bond_sigma_rr_min_MPa = " << bond_rr_min << '\n'
-            << "bond_sigma_rr_max_MPa = " << bond_rr_max << '\n'
-            << "bond_sigma_rtheta_max_abs_MPa = " << bond_rt << '\n'
-            << "sigma_rr_min_MPa = " << e.min_sigma_rr << '\n'
-            << "sigma_rr_max_MPa = " << e.max_sigma_rr << '\n'
-            << "sigma_rtheta_max_abs_MPa = " << e.max_abs_sigma_rtheta << '\n'
-            << "von_mises_max_MPa = " << e.max_von_mises << '\n'
-            << "max_principal_stretch = " << e.max_principal_stretch << '\n'
-            << "min_principal_stretch = " << e.min_principal_stretch << '\n'
-            << "max_principal_strain = " << e.max_principal_stretch - 1. << '\n'
-            << "min_J_gauss = " << e.min_J << '\n'
-            << "max_abs_J_minus_1_gauss = " << e.max_abs_J_minus_1 << '\n'
-            << "wall_time_s = " << wall_clock.wall_time() << '\n'
-            << "time_setup_s = " << time("setup") << '\n'
-            << "time_assembly_s = "
-            << time("assembly") + time("assembly (residual)") << '\n'
-            << "time_linear_solve_s = " << time("linear solve") << '\n'
-            << "time_output_s = " << time("output") << '\n';
-      });
+    write_atomically(output_directory + "/summary.txt", [&](std::ostream &out) {
+      out << std::setprecision(8);
+      out << "# rollnip summary (lengths mm, stresses MPa, loads N/mm)\n";
+      out << "status = " << (status.converged ? "converged" : "stopped")
+          << '\n';
+      if (!status.converged)
+        out << "stopped_because = " << status.message << '\n';
+      out << "theory = " << (material.is_linear() ? "linear" : "nonlinear")
+          << '\n'
+          << "element = " << fe->get_name() << '\n'
+          << "cells = " << triangulation.n_global_active_cells() << '\n'
+          << "dofs = " << dof_handler.n_dofs() << '\n'
+          << "mpi_processes = "
+          << Utilities::MPI::n_mpi_processes(mpi_communicator) << '\n'
+          << "load_fraction = " << status.load_fraction << '\n'
+          << "load_steps = " << step_records.size() << '\n'
+          << "newton_iterations = " << n_newton << '\n'
+          << "cutbacks = " << n_cutbacks << '\n'
+          << "assemblies = " << n_assemblies << '\n'
+          << "linear_solves = " << n_linear_solves << '\n'
+          << "load_resultant_x_N_per_mm = " << R[0] << '\n'
+          << "load_resultant_y_N_per_mm = " << R[1] << '\n'
+          << "nip_load_P_N_per_mm = " << (two_sided ? -2. : -1.) * R[0] << '\n'
+          << "u_r_at_R0_0_mm = " << u_r << '\n'
+          << "indentation_u0_mm = " << -u_r << '\n'
+          << "peak_applied_pressure_MPa = " << peak_applied << '\n'
+          << "peak_normal_pressure_from_stress_MPa = " << peak_normal << '\n'
+          << "bond_sigma_rr_min_MPa = " << bond_rr_min << '\n'
+          << "bond_sigma_rr_max_MPa = " << bond_rr_max << '\n'
+          << "bond_sigma_rtheta_max_abs_MPa = " << bond_rt << '\n'
+          << "sigma_rr_min_MPa = " << e.min_sigma_rr << '\n'
+          << "sigma_rr_max_MPa = " << e.max_sigma_rr << '\n'
+          << "sigma_rtheta_max_abs_MPa = " << e.max_abs_sigma_rtheta << '\n'
+          << "von_mises_max_MPa = " << e.max_von_mises << '\n'
+          << "max_principal_stretch = " << e.max_principal_stretch << '\n'
+          << "min_principal_stretch = " << e.min_principal_stretch << '\n'
+          << "max_principal_strain = " << e.max_principal_stretch - 1. << '\n'
+          << "min_J_gauss = " << e.min_J << '\n'
+          << "max_abs_J_minus_1_gauss = " << e.max_abs_J_minus_1 << '\n'
+          << "wall_time_s = " << wall_clock.wall_time() << '\n'
+          << "time_setup_s = " << time("setup") << '\n'
+          << "time_assembly_s = "
+          << time("assembly") + time("assembly (residual)") << '\n'
+          << "time_linear_solve_s = " << time("linear solve") << '\n'
+          << "time_output_s = " << time("output") << '\n';
+    });
   }
 } // namespace rollnip

@@ -32,6 +32,7 @@ namespace rollnip
       , triangulation(mpi_communicator)
       , material(parameters.material)
       , dof_handler(triangulation)
+      , output_directory(parameters.output.directory)
   {
     auto load =
       std::make_shared<PressureLoad>(parameters.load, parameters.geometry);

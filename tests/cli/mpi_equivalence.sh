@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # One process and two MPI processes must give the same results.
 #
-# Usage: bash mpi_equivalence.sh ROLLNIP MPIEXEC NUMDIFF BATRA_PRM
-#   BATRA_PRM  parameters/batra1980.prm (the paper's pressure scene)
+# Usage: bash mpi_equivalence.sh ROLLNIP MPIEXEC NUMDIFF PRESSURE_PRM
+#   PRESSURE_PRM  parameters/parabolic_pressure.prm (the paper's pressure scene)
 #
-# Runs the scene of BATRA_PRM on a smaller mesh (the overrides are appended
+# Runs the scene of PRESSURE_PRM on a smaller mesh (the overrides are appended
 # to a copy: a later 'set' wins) once without mpirun and once with
 # 'MPIEXEC -np 2', each with its own output directory, then compares with
 # numdiff (relative tolerance 1e-8, absolute 1e-12, fields split at blanks,
@@ -14,7 +14,7 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 [ $# -eq 4 ] ||
-  fail "usage: mpi_equivalence.sh ROLLNIP MPIEXEC NUMDIFF BATRA_PRM"
+  fail "usage: mpi_equivalence.sh ROLLNIP MPIEXEC NUMDIFF PRESSURE_PRM"
 rollnip="$1"
 mpiexec="$2"
 numdiff="$3"

@@ -22,12 +22,12 @@ namespace
       std::to_string(refinements) +
       "\nend\n"
       "subsection Contact\n set Mode = nip angle\n"
-      " set Indenter radius = 76.2\n set Half nip angle = " +
+      " set Indenter radius = 76.2\n set Values = " +
       testing::num(theta0_deg) + "\n set Conformity tolerance = 1e-5\nend\n");
     RollProblem problem(parameters, MPI_COMM_WORLD);
     problem.setup();
     InverseContact contact(problem, parameters);
-    return contact.solve(parameters.contact.theta0);
+    return contact.solve(parameters.contact.values[0]);
   }
 } // namespace
 

@@ -4,6 +4,7 @@
 #include <rollnip/contact/indenter.h>
 #include <rollnip/problem.h>
 
+#include <functional>
 #include <vector>
 
 namespace rollnip
@@ -11,16 +12,19 @@ namespace rollnip
   /// The checks and results of one solved nip (doc/intro.md, section 7).
   struct ContactResult
   {
-    bool         converged = false;
-    std::string  message;
-    double       theta0        = 0; ///< [rad]
-    double       indentation   = 0; ///< u0 [mm]
-    double       nip_load      = 0; ///< P, two-sided [N/mm]
-    double       conformity    = 0; ///< max |gap| / u0 over the contact zone
-    double       penetration   = 0; ///< max(-gap, 0) / u0 outside the zone
-    double       min_pressure  = 0; ///< min f at the parameters [MPa]
-    double       peak_pressure = 0; ///< max f [MPa]
-    unsigned int iterations    = 0;
+    bool        converged = false;
+    std::string message;
+    double      theta0        = 0; ///< [rad]
+    double      indentation   = 0; ///< u0 [mm]
+    double      nip_load      = 0; ///< P, two-sided [N/mm]
+    double      conformity    = 0; ///< max |gap| / u0 over the contact zone
+    double      penetration   = 0; ///< max(-gap, 0) / u0 outside the zone
+    double      min_pressure  = 0; ///< min f at the parameters [MPa]
+    double      peak_pressure = 0; ///< max f [MPa]
+    /// Deformed contact half-length along the surface, and the half-chord
+    /// (the x2 coordinate of the deformed edge point) [mm].
+    double              half_arc = 0, half_chord = 0;
+    unsigned int        iterations = 0;
     std::vector<double> knots;  ///< reference angles of the pressure basis
     std::vector<double> values; ///< f at the knots [MPa]
   };
@@ -67,6 +71,10 @@ namespace rollnip
     const Indenter                   indenter;
     std::vector<SurfaceNode>         nodes;
     ConditionalOStream               pcout;
+    /// The pressure of the problem's current state (empty before the
+    /// first solve) and its theta0: the next solve starts from them.
+    std::function<double(double)> applied_pressure;
+    double                        applied_theta0 = 0;
   };
 
   /// contact.txt (scalars and checks) and contact_pressure.csv (f at the

@@ -1,0 +1,46 @@
+#ifndef rollnip_contact_nip_study_h
+#define rollnip_contact_nip_study_h
+
+#include <rollnip/contact/inverse_contact.h>
+#include <rollnip/parameters.h>
+
+#include <string>
+#include <vector>
+
+namespace rollnip
+{
+  /// One row of the nip characteristic (nip_characteristic.csv).
+  struct NipRow
+  {
+    ContactResult nonlinear;
+    ContactResult linear; ///< same theta0, linear theory (if asked)
+    double        max_principal_strain = 0;
+    double        bond_sigma_rr_min = 0, bond_sigma_rtheta_max = 0; ///< [MPa]
+    double        load_from_traction = 0; ///< P from -sigma_nn on the surface
+    double        hertz_load         = 0; ///< Hertz P for the same half-chord
+    double        thin_layer_load = 0; ///< thin-layer P for the same half-chord
+  };
+
+  /**
+   * Runs the contact scenes of the Contact subsection (doc/intro.md,
+   * section 7): for each of Contact/Values, the nip controlled by theta0,
+   * P or u0; writes each nip's files (in the output directory for one
+   * value, in nip-NN/ below it for a sweep), the nip characteristic with
+   * linear theory, Hertz and the thin-layer asymptote beside it, and
+   * prints the table. Returns the exit code.
+   */
+  int
+  run_nip_study(const Parameters::AllParameters &parameters);
+
+  /**
+   * The nip with the controlled quantity @p target (P or u0 by
+   * Contact/Mode; theta0 [rad] for nip angle): an outer secant iteration on
+   * log theta0 around the inverse iteration of @p contact.
+   */
+  ContactResult
+  solve_controlled_nip(InverseContact                  &contact,
+                       const Parameters::AllParameters &parameters,
+                       const double                     target);
+} // namespace rollnip
+
+#endif

@@ -1,0 +1,297 @@
+#include <deal.II/base/mpi.h>
+
+#include <rollnip/boundary_ids.h>
+#include <rollnip/contact/nip_study.h>
+#include <rollnip/output/atomic_file.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <memory>
+
+namespace rollnip
+{
+  namespace
+  {
+    constexpr double deg = 180. / numbers::PI;
+
+    /// 1/R = 1/R0 + 1/Rbar, the relative curvature of the two bodies.
+    double
+    effective_radius(const Parameters::AllParameters &p)
+    {
+      const double R0 = p.geometry.outer_radius;
+      const double Rb = p.contact.indenter_radius;
+      return std::isfinite(Rb) ? 1. / (1. / R0 + 1. / Rb) : R0;
+    }
+
+    /// The x-resultant of the surface traction from the stress, two-sided:
+    /// P = 2 sum over segments of mean(-sigma_nn) dx2, since on the outer
+    /// arc (counter-clockwise) n ds = (dx2, -dx1).
+    double
+    load_from_traction(const std::vector<OuterSurfacePoint> &outer)
+    {
+      double P = 0;
+      for (unsigned int i = 1; i < outer.size(); ++i)
+        P += (outer[i].normal_pressure + outer[i - 1].normal_pressure) *
+             (outer[i].y - outer[i - 1].y);
+      return P; // 2 * (1/2 mean) * dx2
+    }
+
+    /// Points of the indenter outline near the nip (deformed configuration)
+    /// for the plot of the deformed surface (the paper's Fig. 7).
+    void
+    write_indenter_outline(const Parameters::AllParameters &p,
+                           const ContactResult             &r,
+                           const std::string               &file)
+    {
+      const double R0    = p.geometry.outer_radius;
+      const double Rb    = p.contact.indenter_radius;
+      const double y_max = std::min(3 * std::max(r.half_chord, 1e-3), R0);
+      write_atomically(file, [&](std::ostream &out) {
+        out << "x_mm,y_mm\n" << std::setprecision(10);
+        for (unsigned int i = 0; i <= 200; ++i)
+          {
+            const double y = y_max * i / 200.;
+            const double x = std::isfinite(Rb)
+                               ? R0 + Rb - r.indentation -
+                                   std::sqrt(std::max(0., Rb * Rb - y * y))
+                               : R0 - r.indentation;
+            out << x << ',' << y << '\n';
+          }
+      });
+    }
+  } // namespace
+
+  ContactResult
+  solve_controlled_nip(InverseContact                  &contact,
+                       const Parameters::AllParameters &parameters,
+                       const double                     target)
+  {
+    const auto mode = parameters.contact.mode;
+    if (mode == Parameters::ContactMode::nip_angle)
+      return contact.solve(target);
+
+    ConditionalOStream pcout(std::cout,
+                             Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) ==
+                               0);
+    const bool         by_load = mode == Parameters::ContactMode::load;
+    const double       R0      = parameters.geometry.outer_radius;
+    const double G = 2 * (parameters.material.C1 + parameters.material.C2);
+    const double R = effective_radius(parameters);
+    // First guess from Hertz (P = pi b^2 E*/(4 R), E* = 4 G) or from the
+    // geometric overlap (b^2 ~ 2 R u0), as an angle.
+    const double b     = by_load ? std::sqrt(target * R / (numbers::PI * G))
+                                 : std::sqrt(2 * R * target);
+    double       theta = std::asin(std::min(b / R0, 0.5));
+    theta = std::min(theta, 0.8 * parameters.geometry.sector_angle);
+    double        theta_prev = 0, q_prev = 0;
+    ContactResult r;
+    for (unsigned int it = 1; it <= parameters.contact.max_iterations; ++it)
+      {
+        r = contact.solve(theta);
+        if (!r.converged)
+          return r;
+        const double q = by_load ? r.nip_load : r.indentation;
+        pcout << "Outer iteration " << it << ": theta0 = " << std::fixed
+              << std::setprecision(6) << theta * deg << " deg gives "
+              << (by_load ? "P = " : "u0 = ") << q
+              << (by_load ? " N/mm" : " mm") << " (target " << target << ")"
+              << std::endl;
+        if (std::abs(q / target - 1) < parameters.contact.control_tolerance)
+          return r;
+        // Secant on log q against log theta0; P grows like theta0^2
+        // (Hertz) to theta0^5 (thin layer).
+        double slope = 2;
+        if (q_prev > 0)
+          slope =
+            std::clamp(std::log(q / q_prev) / std::log(theta / theta_prev),
+                       0.5,
+                       8.);
+        theta_prev = theta;
+        q_prev     = q;
+        theta      = std::clamp(theta * std::pow(target / q, 1. / slope),
+                           0.5 * theta,
+                           std::min(2 * theta,
+                                    0.95 * parameters.geometry.sector_angle));
+      }
+    r.converged = false;
+    r.message   = "the outer iteration on theta0 did not reach the target " +
+                std::string(by_load ? "load" : "indentation") + " within " +
+                std::to_string(parameters.contact.control_tolerance) + " in " +
+                std::to_string(parameters.contact.max_iterations) +
+                " iterations";
+    return r;
+  }
+
+  int
+  run_nip_study(const Parameters::AllParameters &parameters)
+  {
+    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    ConditionalOStream pcout(std::cout, root);
+    const auto        &values = parameters.contact.values;
+    const bool         sweep  = values.size() > 1;
+    const std::string &top    = parameters.output.directory;
+
+    std::vector<NipRow> rows;
+    std::string         failure;
+    bool                with_linear = false;
+    // The problems are destroyed inside the handler when something throws,
+    // so that their timers do not report on an exception in flight.
+    std::unique_ptr<RollProblem> nonlinear_problem, linear;
+    try
+      {
+        nonlinear_problem =
+          std::make_unique<RollProblem>(parameters, MPI_COMM_WORLD);
+        RollProblem &nonlinear = *nonlinear_problem;
+        nonlinear.setup();
+        InverseContact contact(nonlinear, parameters);
+
+        // The linear companion: same scene, linear theory, same theta0.
+        Parameters::AllParameters linear_parameters = parameters;
+        linear_parameters.material.theory     = Parameters::Theory::linear;
+        linear_parameters.output.print_timing = false;
+        std::unique_ptr<InverseContact> linear_contact;
+        if (parameters.contact.compare_linear)
+          {
+            linear =
+              std::make_unique<RollProblem>(linear_parameters, MPI_COMM_WORLD);
+            linear->setup();
+            linear_contact =
+              std::make_unique<InverseContact>(*linear, linear_parameters);
+          }
+
+        const double R = effective_radius(parameters);
+        const double G = 2 * (parameters.material.C1 + parameters.material.C2);
+        const double h =
+          parameters.geometry.outer_radius - parameters.geometry.inner_radius;
+        for (unsigned int n = 0; n < values.size(); ++n)
+          {
+            const std::string dir =
+              sweep ? top + "/nip-" + Utilities::int_to_string(n + 1, 2) : top;
+            NipRow row;
+            row.nonlinear =
+              solve_controlled_nip(contact, parameters, values[n]);
+            nonlinear.set_output_directory(dir);
+            RunStatus status;
+            status.converged     = row.nonlinear.converged;
+            status.load_fraction = 1.;
+            status.message       = "contact: " + row.nonlinear.message;
+            if (parameters.output.write_vtu)
+              nonlinear.write_vtu(n + 1, 1.);
+            nonlinear.write_results(status);
+            write_contact_results(row.nonlinear, dir);
+            if (root)
+              write_indenter_outline(parameters,
+                                     row.nonlinear,
+                                     dir + "/indenter.csv");
+            if (!row.nonlinear.converged)
+              {
+                failure = row.nonlinear.message;
+                break;
+              }
+
+            const SurfaceData data   = nonlinear.surface_data(1.);
+            row.max_principal_strain = data.extremes.max_principal_stretch - 1;
+            row.bond_sigma_rr_min    = 0;
+            for (const auto &p : data.bond)
+              {
+                row.bond_sigma_rr_min =
+                  std::min(row.bond_sigma_rr_min, p.sigma_rr);
+                row.bond_sigma_rtheta_max =
+                  std::max(row.bond_sigma_rtheta_max, std::abs(p.sigma_rtheta));
+              }
+            row.load_from_traction = load_from_traction(data.outer);
+            const double b         = row.nonlinear.half_chord;
+            row.hertz_load         = numbers::PI * b * b * 4 * G / (4 * R);
+            row.thin_layer_load = 2 * G * std::pow(b, 5) / (15 * R * h * h * h);
+            pcout << "Nip " << n + 1 << ": P from the applied pressure "
+                  << std::setprecision(6) << row.nonlinear.nip_load
+                  << " N/mm, from the surface stress " << row.load_from_traction
+                  << " N/mm (difference " << std::setprecision(3)
+                  << 100 * (row.load_from_traction / row.nonlinear.nip_load - 1)
+                  << " %)" << std::endl;
+
+            if (linear)
+              {
+                row.linear = linear_contact->solve(row.nonlinear.theta0);
+                linear->set_output_directory(dir + "/linear");
+                RunStatus ls;
+                ls.converged     = row.linear.converged;
+                ls.load_fraction = 1.;
+                ls.message       = "contact: " + row.linear.message;
+                linear->write_results(ls);
+                write_contact_results(row.linear, dir + "/linear");
+              }
+            rows.push_back(row);
+          }
+
+        with_linear = static_cast<bool>(linear);
+      }
+    catch (...)
+      {
+        for (auto *p : {nonlinear_problem.get(), linear.get()})
+          if (p)
+            p->silence_timer();
+        linear.reset();
+        nonlinear_problem.reset();
+        throw;
+      }
+
+    // The nip characteristic.
+    pcout << std::endl
+          << "Nip characteristic (P two-sided per unit length; b = deformed "
+             "half-chord)"
+          << std::endl
+          << " theta0[deg]    P[N/mm]    u0[mm]   b[mm]  arc[mm]  peak f[MPa]"
+             "  mean f[MPa]  max strain  P_linear  P_Hertz  P_thin"
+          << std::endl;
+    for (const auto &r : rows)
+      pcout << std::fixed << std::setprecision(4) << std::setw(11)
+            << r.nonlinear.theta0 * deg << std::setw(11) << r.nonlinear.nip_load
+            << std::setw(10) << r.nonlinear.indentation << std::setw(8)
+            << r.nonlinear.half_chord << std::setw(9) << r.nonlinear.half_arc
+            << std::setw(13) << r.nonlinear.peak_pressure << std::setw(13)
+            << r.nonlinear.nip_load / (2 * r.nonlinear.half_chord)
+            << std::setw(12) << r.max_principal_strain << std::setw(10)
+            << (with_linear ? r.linear.nip_load : 0.) << std::setw(9)
+            << r.hertz_load << std::setw(8) << r.thin_layer_load << std::endl;
+    if (root)
+      {
+        std::filesystem::create_directories(top);
+        write_atomically(
+          top + "/nip_characteristic.csv", [&](std::ostream &out) {
+            out << "theta0_deg,P_N_per_mm,u0_mm,half_chord_mm,half_arc_mm,"
+                   "peak_pressure_MPa,mean_pressure_MPa,max_principal_strain,"
+                   "bond_sigma_rr_min_MPa,bond_sigma_rtheta_max_MPa,"
+                   "P_from_traction_N_per_mm,conformity,penetration,"
+                   "P_linear_N_per_mm,u0_linear_mm,peak_pressure_linear_MPa,"
+                   "P_hertz_N_per_mm,P_thin_layer_N_per_mm\n"
+                << std::setprecision(10);
+            for (const auto &r : rows)
+              out << r.nonlinear.theta0 * deg << ',' << r.nonlinear.nip_load
+                  << ',' << r.nonlinear.indentation << ','
+                  << r.nonlinear.half_chord << ',' << r.nonlinear.half_arc
+                  << ',' << r.nonlinear.peak_pressure << ','
+                  << r.nonlinear.nip_load / (2 * r.nonlinear.half_chord) << ','
+                  << r.max_principal_strain << ',' << r.bond_sigma_rr_min << ','
+                  << r.bond_sigma_rtheta_max << ',' << r.load_from_traction
+                  << ',' << r.nonlinear.conformity << ','
+                  << r.nonlinear.penetration << ','
+                  << (with_linear ? r.linear.nip_load : 0.) << ','
+                  << (with_linear ? r.linear.indentation : 0.) << ','
+                  << (with_linear ? r.linear.peak_pressure : 0.) << ','
+                  << r.hertz_load << ',' << r.thin_layer_load << '\n';
+          });
+      }
+    if (!failure.empty())
+      {
+        if (root)
+          std::cerr << "rollnip: error: contact: " << failure
+                    << "; the state of the last iteration is in '" << top << "'"
+                    << std::endl;
+        return 1;
+      }
+    return 0;
+  }
+} // namespace rollnip
