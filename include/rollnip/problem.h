@@ -271,6 +271,7 @@ namespace rollnip
 
     TrilinosWrappers::SparseMatrix                  system_matrix;
     SolverControl                                   direct_solver_control;
+    std::string                                     direct_solver_name;
     std::unique_ptr<TrilinosWrappers::SolverDirect> direct_solver;
     TrilinosWrappers::MPI::Vector                   solution; ///< owned entries
     TrilinosWrappers::MPI::Vector                   locally_relevant_solution;

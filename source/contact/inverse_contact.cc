@@ -16,7 +16,11 @@ namespace rollnip
 {
   namespace
   {
-    /// Piecewise-linear hat function k on the knots t (f(t.back()) = 0).
+    /// Hat function k on the knots t, with f(t.back()) = 0. Piecewise
+    /// linear, except on the last segment, where it falls like the square
+    /// root of the distance to the edge: the pressure at the edge of a
+    /// smooth (non-conforming) contact does so, and the linear shape there
+    /// made the load depend on where theta0 falls between two nodes.
     double
     hat(const std::vector<double> &t, const unsigned int k, const double x)
     {
@@ -25,7 +29,9 @@ namespace rollnip
       if (k > 0 && x >= t[k - 1] && x <= t[k])
         return (x - t[k - 1]) / (t[k] - t[k - 1]);
       if (x >= t[k] && x <= t[k + 1])
-        return (t[k + 1] - x) / (t[k + 1] - t[k]);
+        return (k + 2 == t.size())
+                 ? std::sqrt((t[k + 1] - x) / (t[k + 1] - t[k]))
+                 : (t[k + 1] - x) / (t[k + 1] - t[k]);
       return 0;
     }
 
@@ -112,19 +118,16 @@ namespace rollnip
                 ExcMessage("the outer surface has no node on the line of "
                            "centres (R0, 0)"));
 
-    // Knots: the nodes below theta0, then theta0 itself (f = 0 there). A
-    // node closer to theta0 than a quarter of its cell is dropped: its
-    // equation would nearly repeat the one at theta0.
+    // Knots: the nodes below theta0, then theta0 itself (f = 0 there).
+    // Every knot but the first carries a zero-gap equation, and so does
+    // theta0, so that every node of the zone is held on the indenter.
     unsigned int m = 0;
     while (m < nodes.size() && nodes[m].theta < theta0)
       ++m;
     AssertThrow(m < nodes.size(),
-                ExcMessage("Contact/Half nip angle: the contact zone reaches "
-                           "the end of the outer arc"));
+                ExcMessage("Contact: the contact zone reaches the end of the "
+                           "outer arc"));
     const unsigned int above = m; // first node beyond theta0
-    if (m > 1 && theta0 - nodes[m - 1].theta <
-                   0.25 * (nodes[m].theta - nodes[m - 1].theta))
-      --m;
     AssertThrow(m >= 2,
                 ExcMessage("Contact/Half nip angle is too small for the mesh: "
                            "refine near theta = 0 (at least two surface nodes "

@@ -101,12 +101,14 @@ namespace rollnip
         if (std::abs(q / target - 1) < parameters.contact.control_tolerance)
           return r;
         // Secant on log q against log theta0; P grows like theta0^2
-        // (Hertz) to theta0^5 (thin layer).
+        // (Hertz) to theta0^5 (thin layer), but the discrete P(theta0) is
+        // much flatter while theta0 moves inside one surface cell (the
+        // edge cell conforms as a whole), hence the low lower bound.
         double slope = 2;
         if (q_prev > 0)
           slope =
             std::clamp(std::log(q / q_prev) / std::log(theta / theta_prev),
-                       0.5,
+                       0.02,
                        8.);
         theta_prev = theta;
         q_prev     = q;

@@ -37,11 +37,31 @@ namespace rollnip
   {
     TimerOutput::Scope t(timer, "linear solve");
     ++n_linear_solves;
-    direct_solver = std::make_unique<TrilinosWrappers::SolverDirect>(
-      direct_solver_control,
-      TrilinosWrappers::SolverDirect::AdditionalData(
-        false, parameters.linear_solver.direct_solver));
-    direct_solver->initialize(system_matrix);
+    // MUMPS can stop on an underestimated workspace (INFOG(1) = -9) for
+    // strongly graded meshes; KLU, with its own pivoting, then takes over
+    // for the rest of the run.
+    try
+      {
+        direct_solver = std::make_unique<TrilinosWrappers::SolverDirect>(
+          direct_solver_control,
+          TrilinosWrappers::SolverDirect::AdditionalData(false,
+                                                         direct_solver_name));
+        direct_solver->initialize(system_matrix);
+      }
+    catch (const std::exception &)
+      {
+        AssertThrow(direct_solver_name != "Amesos_Klu",
+                    ExcMessage("the sparse direct solver failed to factorise "
+                               "the Newton matrix"));
+        pcout << "      (" << direct_solver_name
+              << " failed to factorise; switching to Amesos_Klu)" << std::endl;
+        direct_solver_name = "Amesos_Klu";
+        direct_solver      = std::make_unique<TrilinosWrappers::SolverDirect>(
+          direct_solver_control,
+          TrilinosWrappers::SolverDirect::AdditionalData(false,
+                                                         direct_solver_name));
+        direct_solver->initialize(system_matrix);
+      }
   }
 
   void

@@ -32,6 +32,7 @@ namespace rollnip
       , triangulation(mpi_communicator)
       , material(parameters.material)
       , dof_handler(triangulation)
+      , direct_solver_name(parameters.linear_solver.direct_solver)
       , output_directory(parameters.output.directory)
   {
     auto load =
