@@ -509,7 +509,7 @@ namespace rollnip
                          "indentation");
       declare_documented(prm,
                          "Maximum iterations",
-                         "25",
+                         "40",
                          Patterns::Integer(1),
                          "Contact (Newton) iterations on the pressure "
                          "parameters, and outer iterations on theta0");

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <memory>
+#include <sstream>
 
 namespace rollnip
 {
@@ -84,8 +85,10 @@ namespace rollnip
     const double b     = by_load ? std::sqrt(target * R / (numbers::PI * G))
                                  : std::sqrt(2 * R * target);
     double       theta = std::asin(std::min(b / R0, 0.5));
-    theta = std::min(theta, 0.8 * parameters.geometry.sector_angle);
-    double        theta_prev = 0, q_prev = 0;
+    theta             = std::min(theta, 0.8 * parameters.geometry.sector_angle);
+    double theta_prev = 0, q_prev = 0;
+    // The bracket [lo, hi] of theta0 around the target, once known.
+    double        lo = 0, hi = 0, q_lo = 0, q_hi = 0;
     ContactResult r;
     for (unsigned int it = 1; it <= parameters.contact.max_iterations; ++it)
       {
@@ -100,10 +103,31 @@ namespace rollnip
               << std::endl;
         if (std::abs(q / target - 1) < parameters.contact.control_tolerance)
           return r;
-        // Secant on log q against log theta0; P grows like theta0^2
-        // (Hertz) to theta0^5 (thin layer), but the discrete P(theta0) is
-        // much flatter while theta0 moves inside one surface cell (the
-        // edge cell conforms as a whole), hence the low lower bound.
+        if (q < target)
+          lo = theta, q_lo = q;
+        else
+          hi = theta, q_hi = q;
+        // The discrete q(theta0) jumps where a surface node enters the
+        // zone; a target inside a jump has no solution on this mesh.
+        if (lo > 0 && hi > 0 && hi - lo < 1e-6 * hi)
+          {
+            std::ostringstream msg;
+            msg << std::setprecision(6) << "the discrete "
+                << (by_load ? "P" : "u0") << "(theta0) jumps from " << q_lo
+                << " to " << q_hi << " at theta0 = " << lo * deg
+                << " deg, where a surface node enters the contact zone; the "
+                   "target "
+                << target
+                << " lies in the jump: refine the mesh near the nip or "
+                   "prescribe theta0";
+            r.converged = false;
+            r.message   = msg.str();
+            return r;
+          }
+        // Secant on log q against log theta0 until the target is
+        // bracketed; P grows like theta0^2 (Hertz) to theta0^5 (thin
+        // layer), but the discrete P(theta0) is much flatter while theta0
+        // moves inside one surface cell, hence the low lower bound.
         double slope = 2;
         if (q_prev > 0)
           slope =
@@ -116,6 +140,10 @@ namespace rollnip
                            0.5 * theta,
                            std::min(2 * theta,
                                     0.95 * parameters.geometry.sector_angle));
+        // Once bracketed, bisect: the secant crawls along the flat steps of
+        // the discrete q(theta0).
+        if (lo > 0 && hi > 0)
+          theta = 0.5 * (lo + hi);
       }
     r.converged = false;
     r.message   = "the outer iteration on theta0 did not reach the target " +
