@@ -109,7 +109,8 @@ namespace rollnip
           hi = theta, q_hi = q;
         // The discrete q(theta0) jumps where a surface node enters the
         // zone; a target inside a jump has no solution on this mesh.
-        if (lo > 0 && hi > 0 && hi - lo < 1e-6 * hi)
+        if (lo > 0 && hi > 0 && hi - lo < 1e-9 * hi &&
+            (q_hi - q_lo) > 100 * parameters.contact.control_tolerance * target)
           {
             std::ostringstream msg;
             msg << std::setprecision(6) << "the discrete "
@@ -140,10 +141,14 @@ namespace rollnip
                            0.5 * theta,
                            std::min(2 * theta,
                                     0.95 * parameters.geometry.sector_angle));
-        // Once bracketed, bisect: the secant crawls along the flat steps of
-        // the discrete q(theta0).
+        // Once bracketed, interpolate linearly inside the bracket, but
+        // bisect when that lands near an end (as it does at a jump).
         if (lo > 0 && hi > 0)
-          theta = 0.5 * (lo + hi);
+          {
+            const double t = (target - q_lo) / (q_hi - q_lo);
+            theta =
+              (t > 0.05 && t < 0.95) ? lo + t * (hi - lo) : 0.5 * (lo + hi);
+          }
       }
     r.converged = false;
     r.message   = "the outer iteration on theta0 did not reach the target " +
