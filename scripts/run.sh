@@ -5,6 +5,9 @@
 # A relative FILE.prm is taken from the directory you call this from; rollnip
 # itself runs from the repository root, so relative paths inside the file
 # (Output/Directory, Mesh/Mesh file) are relative to the repository root.
+# After a successful run it draws the figures with scripts/plot_results.sh
+# into OUTPUT_DIR/plots/ (E = 6 (C1 + C2) for the nondimensional contact
+# pressure is taken from the file's Material section when both are set there).
 set -euo pipefail
 
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -42,5 +45,28 @@ else
   echo "run: rollnip stopped with exit status $status; whatever it wrote is in $outdir" >&2
 fi
 echo "     summary.txt, outer_surface.csv, bond_surface.csv, load_steps.csv,"
-echo "     newton_log.csv; open solution.pvd in ParaView"
-exit "$status"
+echo "     newton_log.csv (per nip in nip-NN/ for a sweep); open solution.pvd in ParaView"
+[ "$status" -eq 0 ] || exit "$status"
+
+# Young's modulus E = 6 (C1 + C2) from the Material section, if both constants
+# are plain numbers there (otherwise the E-scaled figure is left out).
+young="$(awk '
+  /^[[:space:]]*subsection[[:space:]]+Material[[:space:]]*$/ { inside = 1; next }
+  inside && /^[[:space:]]*end[[:space:]]*$/ { inside = 0 }
+  inside && /^[[:space:]]*set[[:space:]]+C[12][[:space:]]*=/ {
+    name = $2; sub(/=.*/, "", name)
+    sub(/^[^=]*=[[:space:]]*/, ""); sub(/[[:space:]]*(#.*)?$/, ""); c[name] = $0 }
+  END {
+    number = "^[-+]?[0-9]*[.]?[0-9]+([eE][-+]?[0-9]+)?$"
+    if (c["C1"] ~ number && c["C2"] ~ number && c["C1"] + c["C2"] > 0)
+      printf "%.10g\n", 6 * (c["C1"] + c["C2"]) }' "$prm")"
+
+echo
+plot_status=0
+ROLLNIP_E_MPA="$young" bash "$repo_root/scripts/plot_results.sh" "$outdir" || plot_status=$?
+if [ "$plot_status" -eq 0 ]; then
+  echo "run: plots (PNG and SVG) are in $outdir/plots"
+else
+  echo "run: the run succeeded but plotting failed (exit status $plot_status); the results are in $outdir" >&2
+fi
+exit "$plot_status"
