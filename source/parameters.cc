@@ -527,10 +527,10 @@ namespace rollnip
     {
       prm.enter_subsection("Contact");
       const std::string m = prm.get("Mode");
-      mode = m == "nip angle"   ? ContactMode::nip_angle :
-             m == "load"        ? ContactMode::load :
-             m == "indentation" ? ContactMode::indentation :
-                                  ContactMode::none;
+      mode                = m == "nip angle"     ? ContactMode::nip_angle
+                            : m == "load"        ? ContactMode::load
+                            : m == "indentation" ? ContactMode::indentation
+                                                 : ContactMode::none;
       values.clear();
       for (const auto &v : Utilities::split_string_list(prm.get("Values")))
         values.push_back(std::stod(v) *
