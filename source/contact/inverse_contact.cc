@@ -230,17 +230,37 @@ namespace rollnip
         };
         const Point<dim> x_theta0 =
           Point<dim>((1 - weight) * position(left) + weight * position(above));
-        const unsigned int  n_eq = m; // nodes 1..m-1 and theta0
+        // Equations, scaled by u0 (eq. 7.2): zero gap at the nodes
+        // 1..m-1 of the zone, and the edge row: beyond a smooth contact
+        // edge the gap grows like (theta - theta0)^(3/2), so the gaps of
+        // the first two free nodes A = above, B = above + 1 satisfy
+        //   g_A (theta_B - theta0)^(3/2) - g_B (theta_A - theta0)^(3/2) = 0.
+        // At theta0 = theta_A it reads g_A = 0, the node's own equation
+        // once it is inside: the discrete problem changes continuously as
+        // theta0 passes a node. (Holding the edge point x(theta0) on the
+        // indenter instead pulled the whole edge cell on, and P jumped by
+        // ~10 % at every node.)
+        AssertThrow(above + 1 < nodes.size(),
+                    ExcMessage("Contact: the contact zone reaches the end of "
+                               "the outer arc"));
+        const unsigned int B    = above + 1;
+        const double       span = nodes[B].theta - nodes[above].theta;
+        const double c_A = std::pow((nodes[B].theta - theta0) / span, 1.5);
+        const double c_B = std::pow((nodes[above].theta - theta0) / span, 1.5);
+        const unsigned int  n_eq = m;
         std::vector<double> g(n_eq);
         for (unsigned int j = 1; j < m; ++j)
-          g[j - 1] = indenter.gap(position(j), u0);
-        g[n_eq - 1] = indenter.gap(x_theta0, u0);
+          g[j - 1] = indenter.gap(position(j), u0) / u0;
+        g[n_eq - 1] = (c_A * indenter.gap(position(above), u0) -
+                       c_B * indenter.gap(position(B), u0)) /
+                      u0;
 
-        double conformity = std::abs(g[n_eq - 1]);
-        for (unsigned int i = 1; i < above; ++i)
-          conformity =
-            std::max(conformity, std::abs(indenter.gap(position(i), u0)));
-        conformity /= u0;
+        double conformity = 0, residual = std::abs(g[n_eq - 1]);
+        for (unsigned int j = 0; j + 1 < n_eq; ++j)
+          {
+            conformity = std::max(conformity, std::abs(g[j]));
+            residual   = std::max(residual, std::abs(g[j]));
+          }
         double min_gap_outside = std::numeric_limits<double>::max();
         for (unsigned int i = above; i < nodes.size(); ++i)
           min_gap_outside =
@@ -269,7 +289,7 @@ namespace rollnip
             result.message = "the indentation is not positive";
             break;
           }
-        if (conformity < parameters.contact.tolerance)
+        if (residual < parameters.contact.tolerance)
           {
             result.converged = true;
             break;
@@ -295,9 +315,10 @@ namespace rollnip
                      indenter.gap_derivative_u0(x, u0) * du0;
             };
             for (unsigned int j = 1; j < m; ++j)
-              J(j - 1, k) = dgap(position(j), dU[j]);
-            J(n_eq - 1, k) =
-              dgap(x_theta0, (1 - weight) * dU[left] + weight * dU[above]);
+              J(j - 1, k) = dgap(position(j), dU[j]) / u0;
+            J(n_eq - 1, k) = (c_A * dgap(position(above), dU[above]) -
+                              c_B * dgap(position(B), dU[B])) /
+                             u0;
           }
         Eigen::VectorXd rhs(n_eq);
         for (unsigned int j = 0; j < n_eq; ++j)
