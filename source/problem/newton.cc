@@ -107,8 +107,11 @@ namespace rollnip
       return std::sqrt(e_R * e_R + e_J * e_J);
     };
 
-    double min_J = assemble(load_fraction, true);
-    double e_R, e_J;
+    // J <= 0 means an inverted cell in finite strain; in linear theory J
+    // of I + grad u has no meaning and is not checked.
+    const bool check_J = !material.is_linear();
+    double     min_J   = assemble(load_fraction, true);
+    double     e_R, e_J;
     measure(e_R, e_J);
     if (nl.verbose)
       pcout << "      iter  |R_u|/|F|     sum|J-1|/A    |du|/|u|    step"
@@ -116,7 +119,7 @@ namespace rollnip
 
     for (unsigned int it = 1; it <= nl.max_iterations; ++it)
       {
-        if (!(min_J > 0) || !std::isfinite(e_R))
+        if ((check_J && !(min_J > 0)) || !std::isfinite(e_R))
           break;
         newton_update = 0;
         solve_linear_system(newton_update);
@@ -132,7 +135,7 @@ namespace rollnip
             locally_relevant_solution = solution;
             min_J                     = assemble(load_fraction, false);
             measure(e_R, e_J);
-            const bool ok = min_J > 0 && std::isfinite(e_R) &&
+            const bool ok = (!check_J || min_J > 0) && std::isfinite(e_R) &&
                             merit(e_R, e_J) < (1. - 1e-4 * alpha) * old_merit;
             if (ok || !nl.line_search || ls >= nl.max_line_search_steps)
               break;
@@ -149,7 +152,7 @@ namespace rollnip
                 << "     " << e_u << "   " << std::fixed << std::setprecision(3)
                 << alpha << std::endl;
 
-        if (!(min_J > 0) || !std::isfinite(e_R))
+        if ((check_J && !(min_J > 0)) || !std::isfinite(e_R))
           break;
         const bool converged =
           e_R < nl.residual_tolerance && e_J < nl.constraint_tolerance &&
@@ -171,7 +174,7 @@ namespace rollnip
 
     solution                  = start;
     locally_relevant_solution = solution;
-    if (!(min_J > 0))
+    if (check_J && !(min_J > 0))
       pcout << "      (J <= 0 somewhere: the cover would invert)" << std::endl;
     return false;
   }
