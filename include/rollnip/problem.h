@@ -242,6 +242,17 @@ namespace rollnip
     void
     make_constraints();
 
+    /// Whether face @p f of @p cell carries the follower pressure
+    /// (assembly.cc).
+    bool
+    is_pressure_face(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                     const unsigned int f) const;
+
+    /// n da / dA of eq. 4.1: cof(F) N, or N in linear theory (assembly.cc).
+    Tensor<1, dim>
+    current_area_normal(const Tensor<2, dim> &grad_u,
+                        const Tensor<1, dim> &N) const;
+
     // output.cc
     void
     write_csv(const SurfaceData &data) const;

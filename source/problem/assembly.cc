@@ -66,7 +66,6 @@ namespace rollnip
     std::vector<Tensor<2, dim>>      dP(n_dofs);
 
     const bool           linear = material.is_linear();
-    const auto          &bc     = parameters.boundary_conditions.condition;
     const Tensor<2, dim> I      = unit_symmetric_tensor<dim>();
 
     if (with_matrix)
@@ -122,11 +121,7 @@ namespace rollnip
 
           for (const auto f : cell->face_indices())
             {
-              if (!cell->face(f)->at_boundary())
-                continue;
-              const types::boundary_id b = cell->face(f)->boundary_id();
-              if (b >= BoundaryIds::n_boundaries ||
-                  bc[b] != Parameters::BoundaryCondition::pressure)
+              if (!is_pressure_face(cell, f))
                 continue;
               fe_face_values.reinit(cell, f);
               fe_face_values[displacement].get_function_gradients(
@@ -140,9 +135,7 @@ namespace rollnip
                   const double          JxW   = fe_face_values.JxW(q);
                   // Traction per reference area, pointing into the body.
                   const Tensor<1, dim> h =
-                    linear
-                      ? Tensor<1, dim>(-f * N)
-                      : Tensor<1, dim>(-f * (cofactor(I + face_grad_u[q]) * N));
+                    -f * current_area_normal(face_grad_u[q], N);
                   for (unsigned int k = 0; k < n_dofs; ++k)
                     {
                       face_phi[k] = fe_face_values[displacement].value(k, q);
@@ -211,8 +204,6 @@ namespace rollnip
     Vector<double>                       cell_vector(n_dofs);
     std::vector<types::global_dof_index> dof_indices(n_dofs);
     std::vector<Tensor<2, dim>>          grad_u(face_quadrature.size());
-    const Tensor<2, dim>                 I = unit_symmetric_tensor<dim>();
-    const auto                   &bc = parameters.boundary_conditions.condition;
     TrilinosWrappers::MPI::Vector result(locally_owned_dofs, mpi_communicator);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -220,10 +211,7 @@ namespace rollnip
           cell_vector  = 0;
           bool touched = false;
           for (const auto f : cell->face_indices())
-            if (cell->face(f)->at_boundary() &&
-                cell->face(f)->boundary_id() < BoundaryIds::n_boundaries &&
-                bc[cell->face(f)->boundary_id()] ==
-                  Parameters::BoundaryCondition::pressure)
+            if (is_pressure_face(cell, f))
               {
                 fe_face_values.reinit(cell, f);
                 fe_face_values[displacement].get_function_gradients(
@@ -237,7 +225,7 @@ namespace rollnip
                     touched                 = true;
                     const Tensor<1, dim> &N = fe_face_values.normal_vector(q);
                     const Tensor<1, dim>  nda =
-                      material.is_linear() ? N : cofactor(I + grad_u[q]) * N;
+                      current_area_normal(grad_u[q], N);
                     for (unsigned int i = 0; i < n_dofs; ++i)
                       cell_vector(i) +=
                         gq * nda * fe_face_values[displacement].value(i, q) *
@@ -253,5 +241,27 @@ namespace rollnip
         }
     result.compress(VectorOperation::add);
     return result;
+  }
+
+  bool
+  RollProblem::is_pressure_face(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const unsigned int                                    f) const
+  {
+    if (!cell->face(f)->at_boundary())
+      return false;
+    const types::boundary_id b = cell->face(f)->boundary_id();
+    return b < BoundaryIds::n_boundaries &&
+           parameters.boundary_conditions.condition[b] ==
+             Parameters::BoundaryCondition::pressure;
+  }
+
+  Tensor<1, dim>
+  RollProblem::current_area_normal(const Tensor<2, dim> &grad_u,
+                                   const Tensor<1, dim> &N) const
+  {
+    if (material.is_linear())
+      return N;
+    return cofactor(unit_symmetric_tensor<dim>() + grad_u) * N;
   }
 } // namespace rollnip

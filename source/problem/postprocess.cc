@@ -107,7 +107,6 @@ namespace rollnip
   Tensor<1, dim>
   RollProblem::load_resultant(const double load_fraction) const
   {
-    const auto        &bc     = parameters.boundary_conditions.condition;
     const unsigned int degree = parameters.discretization.displacement_degree();
     const QGauss<dim - 1>            face_quadrature(degree + 1);
     FEFaceValues<dim>                fe_face_values(*mapping,
@@ -118,15 +117,11 @@ namespace rollnip
                                        update_JxW_values);
     const FEValuesExtractors::Vector displacement(0);
     std::vector<Tensor<2, dim>>      grad_u(face_quadrature.size());
-    const Tensor<2, dim>             I = unit_symmetric_tensor<dim>();
     Tensor<1, dim>                   resultant;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              cell->face(f)->boundary_id() < BoundaryIds::n_boundaries &&
-              bc[cell->face(f)->boundary_id()] ==
-                Parameters::BoundaryCondition::pressure)
+          if (is_pressure_face(cell, f))
             {
               fe_face_values.reinit(cell, f);
               fe_face_values[displacement].get_function_gradients(
@@ -136,9 +131,8 @@ namespace rollnip
                   const Point<dim> &X = fe_face_values.quadrature_point(q);
                   const double      f =
                     pressure(std::atan2(X[1], X[0]), load_fraction);
-                  const Tensor<1, dim> &N = fe_face_values.normal_vector(q);
-                  const Tensor<1, dim>  nda =
-                    material.is_linear() ? N : cofactor(I + grad_u[q]) * N;
+                  const Tensor<1, dim> &N   = fe_face_values.normal_vector(q);
+                  const Tensor<1, dim>  nda = current_area_normal(grad_u[q], N);
                   resultant -= f * nda * fe_face_values.JxW(q);
                 }
             }
