@@ -449,6 +449,13 @@ namespace rollnip
                          "Write outer_surface.csv, bond_surface.csv and "
                          "load_steps.csv");
       declare_documented(prm,
+                         "CSV every step",
+                         "true",
+                         Patterns::Bool(),
+                         "Also write outer_surface-NNNN.csv and "
+                         "bond_surface-NNNN.csv for every converged load step "
+                         "(the files without a number hold the final state)");
+      declare_documented(prm,
                          "Print timing",
                          "true",
                          Patterns::Bool(),
@@ -464,6 +471,7 @@ namespace rollnip
       write_vtu      = prm.get_bool("Write VTU");
       vtu_every_step = prm.get_bool("VTU every step");
       write_csv      = prm.get_bool("Write CSV");
+      csv_every_step = prm.get_bool("CSV every step");
       print_timing   = prm.get_bool("Print timing");
       prm.leave_subsection();
     }

@@ -175,6 +175,7 @@ namespace rollnip
       bool        write_vtu;
       bool        vtu_every_step;
       bool        write_csv;
+      bool        csv_every_step;
       bool        print_timing;
 
       static void

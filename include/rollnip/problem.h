@@ -256,6 +256,9 @@ namespace rollnip
     // output.cc
     void
     write_csv(const SurfaceData &data) const;
+    /// outer_surface<suffix>.csv and bond_surface<suffix>.csv (rank 0).
+    void
+    write_surface_csv(const SurfaceData &data, const std::string &suffix) const;
     void
     write_summary(const RunStatus      &status,
                   const SurfaceData    &data,

@@ -224,6 +224,15 @@ namespace rollnip
             if (log_steps && parameters.output.write_vtu &&
                 (parameters.output.vtu_every_step || lambda >= 1. - 1e-12))
               write_vtu(step, lambda);
+            if (log_steps && parameters.output.write_csv &&
+                parameters.output.csv_every_step)
+              {
+                // Collective; rank 0 writes.
+                const SurfaceData data = surface_data(lambda);
+                if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+                  write_surface_csv(data,
+                                    "-" + Utilities::int_to_string(step, 4));
+              }
             if (r.newton_iterations <= ls.fast_newton_iterations)
               increment *= ls.growth_factor;
           }

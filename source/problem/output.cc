@@ -167,28 +167,39 @@ namespace rollnip
   }
 
   void
-  RollProblem::write_csv(const SurfaceData &data) const
+  RollProblem::write_surface_csv(const SurfaceData &data,
+                                 const std::string &suffix) const
   {
     const std::string &dir = output_directory;
     constexpr double   deg = 180. / numbers::PI;
-    write_atomically(dir + "/outer_surface.csv", [&](std::ostream &out) {
-      out << "theta_deg,X_mm,Y_mm,x_mm,y_mm,u_r_mm,u_theta_mm,"
-             "applied_pressure_MPa,normal_pressure_MPa,shear_traction_MPa\n"
-          << std::setprecision(10);
-      for (const auto &p : data.outer)
-        out << p.theta * deg << ',' << p.X << ',' << p.Y << ',' << p.x << ','
-            << p.y << ',' << p.u_r << ',' << p.u_theta << ','
-            << p.applied_pressure << ',' << p.normal_pressure << ','
-            << p.shear_traction << '\n';
-    });
-    write_atomically(dir + "/bond_surface.csv", [&](std::ostream &out) {
-      out << "theta_deg,sigma_rr_MPa,sigma_rtheta_MPa,sigma_thetatheta_MPa,"
-             "sigma_zz_MPa\n"
-          << std::setprecision(10);
-      for (const auto &p : data.bond)
-        out << p.theta * deg << ',' << p.sigma_rr << ',' << p.sigma_rtheta
-            << ',' << p.sigma_thetatheta << ',' << p.sigma_zz << '\n';
-    });
+    std::filesystem::create_directories(dir);
+    write_atomically(
+      dir + "/outer_surface" + suffix + ".csv", [&](std::ostream &out) {
+        out << "theta_deg,X_mm,Y_mm,x_mm,y_mm,u_r_mm,u_theta_mm,"
+               "applied_pressure_MPa,normal_pressure_MPa,shear_traction_MPa\n"
+            << std::setprecision(10);
+        for (const auto &p : data.outer)
+          out << p.theta * deg << ',' << p.X << ',' << p.Y << ',' << p.x << ','
+              << p.y << ',' << p.u_r << ',' << p.u_theta << ','
+              << p.applied_pressure << ',' << p.normal_pressure << ','
+              << p.shear_traction << '\n';
+      });
+    write_atomically(
+      dir + "/bond_surface" + suffix + ".csv", [&](std::ostream &out) {
+        out << "theta_deg,sigma_rr_MPa,sigma_rtheta_MPa,sigma_thetatheta_MPa,"
+               "sigma_zz_MPa\n"
+            << std::setprecision(10);
+        for (const auto &p : data.bond)
+          out << p.theta * deg << ',' << p.sigma_rr << ',' << p.sigma_rtheta
+              << ',' << p.sigma_thetatheta << ',' << p.sigma_zz << '\n';
+      });
+  }
+
+  void
+  RollProblem::write_csv(const SurfaceData &data) const
+  {
+    const std::string &dir = output_directory;
+    write_surface_csv(data, "");
     write_atomically(dir + "/load_steps.csv", [&](std::ostream &out) {
       out << "step,load_fraction,newton_iterations,residual,nip_load_N_per_mm,"
              "u_r_centre_mm,wall_time_s\n"
