@@ -8,6 +8,7 @@
 #include <deal.II/dofs/dof_handler.h>
 
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q.h>
 
 #include <deal.II/lac/affine_constraints.h>
@@ -247,6 +248,11 @@ namespace rollnip
     bool
     is_pressure_face(const typename DoFHandler<dim>::active_cell_iterator &cell,
                      const unsigned int f) const;
+
+    /// Face values for the follower-load integrals: Gauss(degree + 1) on
+    /// the faces, values, gradients, normals, points, JxW (assembly.cc).
+    std::unique_ptr<FEFaceValues<dim>>
+    make_pressure_face_values() const;
 
     /// n da / dA of eq. 4.1: cof(F) N, or N in linear theory (assembly.cc).
     Tensor<1, dim>

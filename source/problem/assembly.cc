@@ -39,13 +39,8 @@ namespace rollnip
                             quadrature,
                             update_values | update_gradients |
                               update_JxW_values);
-    FEFaceValues<dim>     fe_face_values(*mapping,
-                                     *fe,
-                                     face_quadrature,
-                                     update_values | update_gradients |
-                                       update_normal_vectors |
-                                       update_quadrature_points |
-                                       update_JxW_values);
+    const auto            face_values    = make_pressure_face_values();
+    FEFaceValues<dim>    &fe_face_values = *face_values;
 
     const unsigned int                   n_dofs = fe->n_dofs_per_cell();
     const unsigned int                   n_q    = quadrature.size();
@@ -191,17 +186,12 @@ namespace rollnip
     const std::function<double(double)> &g) const
   {
     const unsigned int degree = parameters.discretization.displacement_degree();
-    const QGauss<dim - 1>                face_quadrature(degree + 1);
-    FEFaceValues<dim>                    fe_face_values(*mapping,
-                                     *fe,
-                                     face_quadrature,
-                                     update_values | update_gradients |
-                                       update_normal_vectors |
-                                       update_quadrature_points |
-                                       update_JxW_values);
-    const FEValuesExtractors::Vector     displacement(0);
-    const unsigned int                   n_dofs = fe->n_dofs_per_cell();
-    Vector<double>                       cell_vector(n_dofs);
+    const QGauss<dim - 1>            face_quadrature(degree + 1);
+    const auto                       face_values = make_pressure_face_values();
+    FEFaceValues<dim>               &fe_face_values = *face_values;
+    const FEValuesExtractors::Vector displacement(0);
+    const unsigned int               n_dofs = fe->n_dofs_per_cell();
+    Vector<double>                   cell_vector(n_dofs);
     std::vector<types::global_dof_index> dof_indices(n_dofs);
     std::vector<Tensor<2, dim>>          grad_u(face_quadrature.size());
     TrilinosWrappers::MPI::Vector result(locally_owned_dofs, mpi_communicator);
@@ -263,5 +253,19 @@ namespace rollnip
     if (material.is_linear())
       return N;
     return cofactor(unit_symmetric_tensor<dim>() + grad_u) * N;
+  }
+
+  std::unique_ptr<FEFaceValues<dim>>
+  RollProblem::make_pressure_face_values() const
+  {
+    const unsigned int degree = parameters.discretization.displacement_degree();
+    return std::make_unique<FEFaceValues<dim>>(*mapping,
+                                               *fe,
+                                               QGauss<dim - 1>(degree + 1),
+                                               update_values |
+                                                 update_gradients |
+                                                 update_normal_vectors |
+                                                 update_quadrature_points |
+                                                 update_JxW_values);
   }
 } // namespace rollnip

@@ -109,12 +109,8 @@ namespace rollnip
   {
     const unsigned int degree = parameters.discretization.displacement_degree();
     const QGauss<dim - 1>            face_quadrature(degree + 1);
-    FEFaceValues<dim>                fe_face_values(*mapping,
-                                     *fe,
-                                     face_quadrature,
-                                     update_gradients | update_normal_vectors |
-                                       update_quadrature_points |
-                                       update_JxW_values);
+    const auto                       face_values = make_pressure_face_values();
+    FEFaceValues<dim>               &fe_face_values = *face_values;
     const FEValuesExtractors::Vector displacement(0);
     std::vector<Tensor<2, dim>>      grad_u(face_quadrature.size());
     Tensor<1, dim>                   resultant;
