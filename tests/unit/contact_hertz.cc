@@ -1,13 +1,18 @@
 // Linear theory against Hertz (doc/intro.md section 7; physics.md section 8
 // item 5): a thick cover (R1 = 5 mm, R0 = 60.7 mm, h = 55.7 mm) pressed by
-// the Rbar = 76.2 mm cylinder at nips much smaller than h. For a rigid
+// the Rbar = 76.2 mm cylinder at nips smaller than h. For a rigid
 // cylinder on an incompressible half-space in plane strain,
 //   P = pi b^2 E* / (4 R),  E* = 4 G,  1/R = 1/R0 + 1/Rbar,
 //   peak pressure 2 P / (pi b),
-// with b the contact half-width. The finite thickness changes P by a
-// relative amount of order (b/h)^2, below 1 % here (b/h <= 0.08), so P and
-// the peak pressure must match to 1 % and 2 % (the peak sits on one node and
-// carries more of the discretisation error).
+// with b the contact half-width. The finite thickness and the curvature of
+// the cover change these by relative amounts of order (b/h)^2 and
+// (b/R0)^2, so the error must shrink as the nip shrinks: measured on this
+// mesh, the peak pressure lies 5.8, 3.5, 1.6, 0.5 % below 2P/(pi b) at
+// theta0 = 8, 6, 4, 2 deg (b/h = 0.14 ... 0.04), and P lies 1.6 % above
+// Hertz at 8 deg but within 0.6 % at 4, 3 and 2 deg. Below 2 deg the mesh
+// (a fixed one) takes over: fewer nodes carry the nip (4 % at 0.5 deg), so
+// the test stops at 2 deg. Asserted: the peak error falls monotonically
+// from 8 to 2 deg; P within 1 % (and better than at 8 deg) for b/h < 0.08.
 
 #include <rollnip/contact/nip_study.h>
 
@@ -31,26 +36,36 @@ main(int argc, char **argv)
                           " set Indenter radius = 76.2\nend\n");
   RollProblem problem(parameters, MPI_COMM_WORLD);
   problem.setup();
-  InverseContact contact(problem, parameters);
-  const double   G = 2 * (parameters.material.C1 + parameters.material.C2);
-  const double   R = 1. / (1. / 60.7 + 1. / 76.2);
-  for (const double theta0_deg : {2., 4.})
+  InverseContact      contact(problem, parameters);
+  const double        G = 2 * (parameters.material.C1 + parameters.material.C2);
+  const double        R = 1. / (1. / 60.7 + 1. / 76.2);
+  std::vector<double> peak_error, load_error;
+  for (const double theta0_deg : {8., 6., 4., 2.})
     {
       const ContactResult r = contact.solve(theta0_deg * numbers::PI / 180);
       const double        b = r.half_chord;
       const double        P_hertz    = numbers::PI * b * b * 4 * G / (4 * R);
       const double        peak_hertz = 2 * r.nip_load / (numbers::PI * b);
-      const std::string   at         = "theta0 = " + testing::num(theta0_deg) +
-                             " deg (b/h = " + testing::num(b / 55.7) + "): ";
-      checker.check(r.converged, at + "converged");
-      checker.check(std::abs(r.nip_load / P_hertz - 1) < 0.01,
-                    at + "P = " + testing::num(r.nip_load) + " N/mm, Hertz " +
-                      testing::num(P_hertz) + " N/mm (ratio " +
-                      testing::num(r.nip_load / P_hertz) + ", within 1 %)");
-      checker.check(std::abs(r.peak_pressure / peak_hertz - 1) < 0.02,
-                    at + "peak pressure " + testing::num(r.peak_pressure) +
-                      " MPa, Hertz 2P/(pi b) = " + testing::num(peak_hertz) +
-                      " MPa (within 2 %)");
+      checker.check(r.converged,
+                    "theta0 = " + testing::num(theta0_deg) + " deg: converged");
+      load_error.push_back(std::abs(r.nip_load / P_hertz - 1));
+      peak_error.push_back(std::abs(r.peak_pressure / peak_hertz - 1));
+      std::cout << "  theta0 = " << theta0_deg << " deg, b/h = " << b / 55.7
+                << ": P = " << r.nip_load << " N/mm, Hertz " << P_hertz
+                << " N/mm (error " << 100 * load_error.back() << " %); peak "
+                << r.peak_pressure << " MPa, 2P/(pi b) " << peak_hertz
+                << " MPa (error " << 100 * peak_error.back() << " %)"
+                << std::endl;
     }
+  for (unsigned int i = 1; i < peak_error.size(); ++i)
+    checker.check(peak_error[i] < peak_error[i - 1],
+                  "the peak-pressure error shrinks with the nip: " +
+                    testing::num(100 * peak_error[i - 1]) + " % -> " +
+                    testing::num(100 * peak_error[i]) + " %");
+  for (unsigned int i = 2; i < load_error.size(); ++i)
+    checker.check(load_error[i] < 0.01 && load_error[i] < load_error[0],
+                  "P within 1 % of Hertz at b/h < 0.08 (" +
+                    testing::num(100 * load_error[i]) + " %, " +
+                    testing::num(100 * load_error[0]) + " % at 8 deg)");
   return checker.result();
 }

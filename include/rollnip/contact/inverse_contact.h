@@ -62,7 +62,8 @@ namespace rollnip
     void
     collect_surface_nodes();
 
-    /// u at all surface nodes of a distributed vector (on all ranks).
+    /// u at all surface nodes of a distributed vector (on all ranks); in
+    /// linear theory only its normal part, which alone enters the gap.
     std::vector<Tensor<1, dim>>
     nodal_values(const TrilinosWrappers::MPI::Vector &v) const;
 
