@@ -21,6 +21,7 @@
 #include <rollnip/material/mooney_rivlin.h>
 #include <rollnip/parameters.h>
 #include <rollnip/postprocess/surface_data.h>
+#include <rollnip/solvers/sparse_direct.h>
 
 #include <functional>
 #include <memory>
@@ -289,14 +290,12 @@ namespace rollnip
     IndexSet                       pressure_dofs; ///< owned pressure DoFs
     AffineConstraints<double>      constraints;
 
-    TrilinosWrappers::SparseMatrix                  system_matrix;
-    SolverControl                                   direct_solver_control;
-    std::string                                     direct_solver_name;
-    std::unique_ptr<TrilinosWrappers::SolverDirect> direct_solver;
-    TrilinosWrappers::MPI::Vector                   solution; ///< owned entries
-    TrilinosWrappers::MPI::Vector                   locally_relevant_solution;
-    TrilinosWrappers::MPI::Vector                   system_rhs; ///< residual R
-    TrilinosWrappers::MPI::Vector external_force; ///< surface load part
+    TrilinosWrappers::SparseMatrix system_matrix;
+    SparseDirectSolver             direct_solver;
+    TrilinosWrappers::MPI::Vector  solution; ///< owned entries
+    TrilinosWrappers::MPI::Vector  locally_relevant_solution;
+    TrilinosWrappers::MPI::Vector  system_rhs;     ///< residual R
+    TrilinosWrappers::MPI::Vector  external_force; ///< surface load part
 
     std::string output_directory;
     double      domain_area = 0;

@@ -37,31 +37,11 @@ namespace rollnip
   {
     TimerOutput::Scope t(timer, "linear solve");
     ++n_linear_solves;
-    // MUMPS can stop on an underestimated workspace (INFOG(1) = -9) for
-    // strongly graded meshes; KLU, with its own pivoting, then takes over
-    // for the rest of the run.
-    try
-      {
-        direct_solver = std::make_unique<TrilinosWrappers::SolverDirect>(
-          direct_solver_control,
-          TrilinosWrappers::SolverDirect::AdditionalData(false,
-                                                         direct_solver_name));
-        direct_solver->initialize(system_matrix);
-      }
-    catch (const std::exception &)
-      {
-        AssertThrow(direct_solver_name != "Amesos_Klu",
-                    ExcMessage("the sparse direct solver failed to factorise "
-                               "the Newton matrix"));
-        pcout << "      (" << direct_solver_name
-              << " failed to factorise; switching to Amesos_Klu)" << std::endl;
-        direct_solver_name = "Amesos_Klu";
-        direct_solver      = std::make_unique<TrilinosWrappers::SolverDirect>(
-          direct_solver_control,
-          TrilinosWrappers::SolverDirect::AdditionalData(false,
-                                                         direct_solver_name));
-        direct_solver->initialize(system_matrix);
-      }
+    const std::string before = direct_solver.name();
+    direct_solver.factorize(system_matrix);
+    if (direct_solver.name() != before)
+      pcout << "      (" << before << " failed to factorise; switching to "
+            << direct_solver.name() << ")" << std::endl;
   }
 
   void
@@ -69,8 +49,7 @@ namespace rollnip
                                   TrilinosWrappers::MPI::Vector       &x)
   {
     TimerOutput::Scope t(timer, "linear solve");
-    Assert(direct_solver, ExcMessage("factorize_tangent() first"));
-    direct_solver->solve(x, rhs);
+    direct_solver.solve(rhs, x);
     constraints.distribute(x);
   }
 

@@ -279,6 +279,7 @@ namespace rollnip
           << "cutbacks = " << n_cutbacks << '\n'
           << "assemblies = " << n_assemblies << '\n'
           << "linear_solves = " << n_linear_solves << '\n'
+          << "symbolic_factorisations = " << direct_solver.n_analyses << '\n'
           << "load_resultant_x_N_per_mm = " << R[0] << '\n'
           << "load_resultant_y_N_per_mm = " << R[1] << '\n'
           << "nip_load_P_N_per_mm = " << (two_sided ? -2. : -1.) * R[0] << '\n'

@@ -32,7 +32,7 @@ namespace rollnip
       , triangulation(mpi_communicator)
       , material(parameters.material)
       , dof_handler(triangulation)
-      , direct_solver_name(parameters.linear_solver.direct_solver)
+      , direct_solver(parameters.linear_solver.direct_solver)
       , output_directory(parameters.output.directory)
   {
     auto load =
@@ -96,6 +96,7 @@ namespace rollnip
                                                locally_owned_dofs,
                                                mpi_communicator,
                                                locally_relevant_dofs);
+    direct_solver.forget_pattern();
     system_matrix.reinit(locally_owned_dofs,
                          locally_owned_dofs,
                          dsp,
