@@ -4,6 +4,7 @@
 #include <rollnip/parameters.h>
 #include <rollnip/problem.h>
 #include <rollnip/run_errors.h>
+#include <rollnip/study/refinement_study.h>
 
 #include <iostream>
 #include <memory>
@@ -92,6 +93,8 @@ main(int argc, char **argv)
   return run_guarded(root, [&]() {
     Parameters::AllParameters parameters;
     parameters.read(file);
+    if (!parameters.study.levels.empty() && !validate_only)
+      return run_refinement_study(parameters);
     if (parameters.contact.mode != Parameters::ContactMode::none &&
         !validate_only)
       return run_nip_study(parameters);

@@ -570,6 +570,43 @@ namespace rollnip
     }
 
     void
+    Study::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Study");
+      declare_documented(prm,
+                         "Refinement levels",
+                         "",
+                         Patterns::List(Patterns::Integer(0, 12), 0),
+                         "A refinement study: the scene is run at each of "
+                         "these Mesh/Global refinements (e.g. 0, 1, 2, 3) and "
+                         "a convergence table with Richardson-extrapolated "
+                         "errors, observed orders, wall time and memory is "
+                         "written (study.csv, study.txt); empty: a single "
+                         "run");
+      declare_documented(prm,
+                         "Elements",
+                         "",
+                         Patterns::List(Patterns::Selection("Q1-P0|Q2-P1"), 0),
+                         "Elements to compare in the study (e.g. Q1-P0, "
+                         "Q2-P1); empty: Discretization/Element only");
+      prm.leave_subsection();
+    }
+
+    void
+    Study::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Study");
+      levels.clear();
+      for (const auto &v :
+           Utilities::split_string_list(prm.get("Refinement levels")))
+        levels.push_back(std::stoi(v));
+      elements.clear();
+      for (const auto &v : Utilities::split_string_list(prm.get("Elements")))
+        elements.push_back(v == "Q2-P1" ? Element::q2_p1 : Element::q1_p0);
+      prm.leave_subsection();
+    }
+
+    void
     AllParameters::declare(ParameterHandler &prm)
     {
       Geometry::declare(prm);
@@ -583,6 +620,7 @@ namespace rollnip
       LinearSolver::declare(prm);
       Output::declare(prm);
       Contact::declare(prm);
+      Study::declare(prm);
     }
 
     void
@@ -599,6 +637,7 @@ namespace rollnip
       linear_solver.parse(prm);
       output.parse(prm);
       contact.parse(prm);
+      study.parse(prm);
     }
 
     void

@@ -210,6 +210,21 @@ namespace rollnip
       parse(ParameterHandler &prm);
     };
 
+    /// A refinement study (doc/intro.md section 8): the scene at several
+    /// mesh levels and, if asked, with several elements.
+    struct Study
+    {
+      /// Mesh/Global refinements of each run; empty: no study.
+      std::vector<unsigned int> levels;
+      /// Elements to compare; empty: Discretization/Element only.
+      std::vector<Element> elements;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
     /// All parameters of a run, one member per subsection.
     struct AllParameters
     {
@@ -224,6 +239,7 @@ namespace rollnip
       LinearSolver       linear_solver;
       Output             output;
       Contact            contact;
+      Study              study;
 
       static void
       declare(ParameterHandler &prm);

@@ -160,7 +160,8 @@ namespace rollnip
   }
 
   int
-  run_nip_study(const Parameters::AllParameters &parameters)
+  run_nip_study(const Parameters::AllParameters &parameters,
+                std::vector<NipRow>             *rows_out)
   {
     const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     ConditionalOStream pcout(std::cout, root);
@@ -205,6 +206,8 @@ namespace rollnip
             const std::string dir =
               sweep ? top + "/nip-" + Utilities::int_to_string(n + 1, 2) : top;
             NipRow row;
+            row.n_dofs  = nonlinear.n_dofs();
+            row.n_cells = nonlinear.n_cells();
             row.nonlinear =
               solve_controlled_nip(contact, parameters, values[n]);
             nonlinear.set_output_directory(dir);
@@ -319,6 +322,8 @@ namespace rollnip
                   << r.hertz_load << ',' << r.thin_layer_load << '\n';
           });
       }
+    if (rows_out)
+      *rows_out = rows;
     if (!failure.empty())
       {
         if (root)

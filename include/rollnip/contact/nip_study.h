@@ -19,6 +19,8 @@ namespace rollnip
     double        load_from_traction = 0; ///< P from -sigma_nn on the surface
     double        hertz_load         = 0; ///< Hertz P for the same half-chord
     double        thin_layer_load = 0; ///< thin-layer P for the same half-chord
+    types::global_dof_index n_dofs  = 0; ///< of the nonlinear problem
+    unsigned int            n_cells = 0;
   };
 
   /**
@@ -27,10 +29,12 @@ namespace rollnip
    * P or u0; writes each nip's files (in the output directory for one
    * value, in nip-NN/ below it for a sweep), the nip characteristic with
    * linear theory, Hertz and the thin-layer asymptote beside it, and
-   * prints the table. Returns the exit code.
+   * prints the table. Returns the exit code; the rows, if @p rows_out is
+   * given, go there too.
    */
   int
-  run_nip_study(const Parameters::AllParameters &parameters);
+  run_nip_study(const Parameters::AllParameters &parameters,
+                std::vector<NipRow>             *rows_out = nullptr);
 
   /**
    * The nip with the controlled quantity @p target (P or u0 by

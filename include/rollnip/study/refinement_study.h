@@ -1,0 +1,37 @@
+#ifndef rollnip_study_refinement_study_h
+#define rollnip_study_refinement_study_h
+
+#include <rollnip/parameters.h>
+
+#include <string>
+#include <vector>
+
+namespace rollnip
+{
+  /// Estimate of the converged value of a sequence of results on meshes
+  /// refined by halving (doc/intro.md section 8).
+  struct Extrapolation
+  {
+    double value = 0;     ///< Richardson-extrapolated, or the finest if none
+    double order = 0;     ///< observed order from the last three levels
+    bool   valid = false; ///< false: not monotone, or fewer than 3 levels
+  };
+
+  /// From the last three values v1, v2, v3: with r = (v3 - v2)/(v2 - v1)
+  /// in (0, 0.9), order = -log2 r and value = v3 + (v3 - v2) r / (1 - r).
+  Extrapolation
+  extrapolate(const std::vector<double> &values);
+
+  /**
+   * The refinement study (Study subsection): the scene of @p parameters at
+   * each of Study/Refinement levels, for each of Study/Elements; for a
+   * contact scene the first of Contact/Values is the nip. Prints a deal.II
+   * ConvergenceTable per element and writes study.csv and study.txt in
+   * Output/Directory, each run's own files below study/. Returns the exit
+   * code; a failed run ends the study with the rows before it written.
+   */
+  int
+  run_refinement_study(const Parameters::AllParameters &parameters);
+} // namespace rollnip
+
+#endif

@@ -1,0 +1,325 @@
+#include <deal.II/base/convergence_table.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <rollnip/contact/nip_study.h>
+#include <rollnip/output/atomic_file.h>
+#include <rollnip/problem.h>
+#include <rollnip/study/refinement_study.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace rollnip
+{
+  Extrapolation
+  extrapolate(const std::vector<double> &v)
+  {
+    Extrapolation e;
+    if (v.empty())
+      return e;
+    e.value             = v.back();
+    const std::size_t n = v.size();
+    if (n < 3)
+      return e;
+    const double d1 = v[n - 2] - v[n - 3], d2 = v[n - 1] - v[n - 2];
+    if (d1 == 0 || d2 == 0)
+      return e;
+    const double r = d2 / d1;
+    // Oscillating, or so slow (order < 0.15) that the estimate would rest
+    // on noise.
+    if (r <= 0 || r >= 0.9)
+      return e;
+    e.value = v[n - 1] + d2 * r / (1 - r);
+    e.order = -std::log2(r);
+    e.valid = true;
+    return e;
+  }
+
+  namespace
+  {
+    struct Quantity
+    {
+      std::string label; ///< table column
+      std::string key;   ///< CSV column
+      std::string error; ///< table column of its error
+    };
+
+    const std::vector<Quantity> contact_quantities = {
+      {"P [N/mm]", "P_N_per_mm", "e_P"},
+      {"u0 [mm]", "u0_mm", "e_u0"},
+      {"b [mm]", "half_chord_mm", "e_b"},
+      {"peak f [MPa]", "peak_pressure_MPa", "e_peak"},
+      {"bond s_rr [MPa]", "bond_sigma_rr_min_MPa", "e_srr"},
+      {"bond s_rt [MPa]", "bond_sigma_rtheta_max_MPa", "e_srt"}};
+
+    const std::vector<Quantity> pressure_quantities = {
+      {"u0 [mm]", "u0_mm", "e_u0"},
+      {"max strain", "max_principal_strain", "e_strain"},
+      {"bond s_rr [MPa]", "bond_sigma_rr_min_MPa", "e_srr"},
+      {"bond s_rt [MPa]", "bond_sigma_rtheta_max_MPa", "e_srt"}};
+
+    struct Run
+    {
+      Parameters::Element      element;
+      unsigned int             level  = 0;
+      types::global_cell_index cells  = 0;
+      types::global_dof_index  dofs   = 0;
+      double                   wall   = 0; ///< [s]
+      double                   memory = 0; ///< peak resident set [MB]
+      std::vector<double>      values;
+    };
+
+    std::string
+    element_name(const Parameters::Element e)
+    {
+      return e == Parameters::Element::q2_p1 ? "Q2-P1" : "Q1-P0";
+    }
+
+    /// One run of the scene; returns the exit code.
+    int
+    run_scene(const Parameters::AllParameters &p, Run &run)
+    {
+      if (p.contact.mode != Parameters::ContactMode::none)
+        {
+          std::vector<NipRow> rows;
+          const int           code = run_nip_study(p, &rows);
+          if (code != 0 || rows.empty())
+            return code != 0 ? code : 1;
+          const NipRow &r = rows[0];
+          run.cells       = r.n_cells;
+          run.dofs        = r.n_dofs;
+          run.values      = {r.nonlinear.nip_load,
+                             r.nonlinear.indentation,
+                             r.nonlinear.half_chord,
+                             r.nonlinear.peak_pressure,
+                             r.bond_sigma_rr_min,
+                             r.bond_sigma_rtheta_max};
+          return 0;
+        }
+      RollProblem problem(p, MPI_COMM_WORLD);
+      try
+        {
+          problem.setup();
+          const RunStatus status = problem.run();
+          problem.write_results(status);
+          if (!status.converged)
+            {
+              problem.silence_timer();
+              return 1;
+            }
+          const SurfaceData data = problem.surface_data(1.);
+          double            srr = 0, srt = 0;
+          for (const auto &b : data.bond)
+            {
+              srr = std::min(srr, b.sigma_rr);
+              srt = std::max(srt, std::abs(b.sigma_rtheta));
+            }
+          run.cells  = problem.n_cells();
+          run.dofs   = problem.n_dofs();
+          run.values = {-problem.radial_displacement_at(
+                          Point<dim>(p.geometry.outer_radius, 0.)),
+                        data.extremes.max_principal_stretch - 1,
+                        srr,
+                        srt};
+        }
+      catch (...)
+        {
+          problem.silence_timer();
+          throw;
+        }
+      return 0;
+    }
+
+    /// The coarsest run whose estimated relative error in quantity q is
+    /// below @p tolerance, as text.
+    std::string
+    cheapest(const std::vector<Run>    &runs,
+             const std::vector<double> &exact,
+             const unsigned int         q,
+             const double               tolerance)
+    {
+      for (const auto &r : runs)
+        if (std::abs(r.values[q] / exact[q] - 1) < tolerance)
+          {
+            std::ostringstream s;
+            s << "level " << r.level << " (" << r.dofs << " DoFs, "
+              << std::setprecision(3) << r.wall << " s)";
+            return s.str();
+          }
+      return "none of the levels run";
+    }
+  } // namespace
+
+  int
+  run_refinement_study(const Parameters::AllParameters &parameters)
+  {
+    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    ConditionalOStream pcout(std::cout, root);
+    const bool         contact =
+      parameters.contact.mode != Parameters::ContactMode::none;
+    const auto &quantities = contact ? contact_quantities : pressure_quantities;
+    std::vector<Parameters::Element> elements = parameters.study.elements;
+    if (elements.empty())
+      elements = {parameters.discretization.element};
+    const std::string &top = parameters.output.directory;
+
+    std::vector<Run> runs;
+    std::string      failure;
+    for (const auto element : elements)
+      {
+        for (const unsigned int level : parameters.study.levels)
+          {
+            Parameters::AllParameters p = parameters;
+            p.mesh.global_refinements   = level;
+            p.discretization.element    = element;
+            p.output.print_timing       = false;
+            p.contact.compare_linear    = false;
+            p.output.directory = top + "/study/" + element_name(element) +
+                                 "-level-" + std::to_string(level);
+            if (contact)
+              p.contact.values.resize(1);
+            pcout << "Study: " << element_name(element) << ", level " << level
+                  << std::endl;
+            Run        run;
+            const auto start = std::chrono::steady_clock::now();
+            const int  code  = run_scene(p, run);
+            run.wall =
+              Utilities::MPI::max(std::chrono::duration<double>(
+                                    std::chrono::steady_clock::now() - start)
+                                    .count(),
+                                  MPI_COMM_WORLD);
+            Utilities::System::MemoryStats memory;
+            Utilities::System::get_memory_stats(memory);
+            run.memory =
+              Utilities::MPI::sum(memory.VmHWM / 1024., MPI_COMM_WORLD);
+            run.element = element;
+            run.level   = level;
+            if (code != 0)
+              {
+                failure = element_name(element) + " at level " +
+                          std::to_string(level) + " did not converge (see " +
+                          p.output.directory + ")";
+                break;
+              }
+            runs.push_back(run);
+          }
+        if (!failure.empty())
+          break;
+      }
+
+    // One table per element; errors against the extrapolated value of
+    // that element's sequence.
+    std::ostringstream text, csv;
+    csv << "element,level,cells,dofs";
+    for (const auto &q : quantities)
+      csv << ',' << q.key;
+    for (const auto &q : quantities)
+      csv << ",error_" << q.key;
+    csv << ",wall_s,peak_memory_MB\n" << std::setprecision(10);
+    for (const auto element : elements)
+      {
+        std::vector<Run> mine;
+        for (const auto &r : runs)
+          if (r.element == element)
+            mine.push_back(r);
+        if (mine.empty())
+          continue;
+        std::vector<double>        exact(quantities.size());
+        std::vector<Extrapolation> ex(quantities.size());
+        for (unsigned int q = 0; q < quantities.size(); ++q)
+          {
+            std::vector<double> v;
+            for (const auto &r : mine)
+              v.push_back(r.values[q]);
+            ex[q]    = extrapolate(v);
+            exact[q] = ex[q].value;
+          }
+        ConvergenceTable table;
+        for (const auto &r : mine)
+          {
+            table.add_value("level", r.level);
+            table.add_value("cells", static_cast<unsigned int>(r.cells));
+            table.add_value("DoFs", static_cast<unsigned int>(r.dofs));
+            csv << element_name(element) << ',' << r.level << ',' << r.cells
+                << ',' << r.dofs;
+            for (unsigned int q = 0; q < quantities.size(); ++q)
+              {
+                table.add_value(quantities[q].label, r.values[q]);
+                csv << ',' << r.values[q];
+              }
+            for (unsigned int q = 0; q < quantities.size(); ++q)
+              {
+                const double e = std::abs(r.values[q] / exact[q] - 1);
+                table.add_value(quantities[q].error, e);
+                csv << ',' << e;
+              }
+            table.add_value("wall [s]", r.wall);
+            table.add_value("memory [MB]", r.memory);
+            csv << ',' << r.wall << ',' << r.memory << '\n';
+          }
+        for (unsigned int q = 0; q < quantities.size(); ++q)
+          {
+            const std::string l = quantities[q].label;
+            table.set_precision(l, 6);
+            const std::string &e = quantities[q].error;
+            table.set_precision(e, 2);
+            table.set_scientific(e, true);
+            if (ex[q].valid)
+              table.evaluate_convergence_rates(
+                e, ConvergenceTable::reduction_rate_log2);
+          }
+        table.set_precision("wall [s]", 3);
+        table.set_precision("memory [MB]", 1);
+
+        text << "Refinement study, " << element_name(element)
+             << " (e = relative error against the Richardson-extrapolated "
+                "value; rates are log2 of the error reduction per level)\n";
+        table.write_text(text, TableHandler::org_mode_table);
+        text << "Extrapolated values (observed order from the last three "
+                "levels):\n";
+        for (unsigned int q = 0; q < quantities.size(); ++q)
+          {
+            text << "  " << std::setw(16) << std::left << quantities[q].label
+                 << std::right << std::setprecision(8) << ex[q].value;
+            if (ex[q].valid)
+              text << "   order " << std::setprecision(3) << ex[q].order;
+            else
+              text << "   (not extrapolated: fewer than 3 levels or not "
+                      "monotone; errors are against the finest level)";
+            text << '\n';
+          }
+        text << "Coarsest level within 1 % / 0.1 % of the extrapolated "
+             << quantities[0].label << ": " << cheapest(mine, exact, 0, 1e-2)
+             << " / " << cheapest(mine, exact, 0, 1e-3) << '\n';
+        if (contact)
+          text << "Coarsest level within 1 % / 0.1 % of the extrapolated "
+                  "nip half-width b: "
+               << cheapest(mine, exact, 2, 1e-2) << " / "
+               << cheapest(mine, exact, 2, 1e-3) << '\n';
+        text << '\n';
+      }
+    if (!failure.empty())
+      text << "The study stopped: " << failure << "\n";
+    pcout << '\n' << text.str();
+    if (root)
+      {
+        std::filesystem::create_directories(top);
+        write_atomically(top + "/study.csv",
+                         [&](std::ostream &out) { out << csv.str(); });
+        write_atomically(top + "/study.txt",
+                         [&](std::ostream &out) { out << text.str(); });
+      }
+    if (!failure.empty())
+      {
+        if (root)
+          std::cerr << "rollnip: error: study: " << failure << std::endl;
+        return 1;
+      }
+    return 0;
+  }
+} // namespace rollnip

@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# The study mode (Study/Refinement levels) on a small contact scene: the
+# run-30 geometry of parameters/batra1980.prm with one nip, theta0 =
+# 7.371101 deg (a vertex of the coarse mesh, so a surface node on every
+# level: the discrete P(theta0) jumps where theta0 crosses a node, see
+# doc/intro.md section 7), levels 0..3.
+#
+# Usage: bash refinement_study.sh ROLLNIP BATRA_PRM PLOT_STUDY_SH
+#
+# Checks, against independent expectations:
+#   - study.csv has one row per level, with cells x4 and wall time and
+#     memory filled in;
+#   - the estimated error of P falls at every level and its observed order
+#     (printed in study.txt) lies in [0.9, 2.2]: P at a fixed theta0
+#     converges at about first order (tests/unit/contact_nip_angle.cc:
+#     1.12, 1.17), limited by the square-root edge of the pressure;
+#   - the nip half-width b converges faster (it is fixed by theta0 up to the
+#     motion of the surface): order in [1.5, 3.5];
+#   - the extrapolated P agrees with the limit found from both sides of the
+#     node in contact_nip_angle (8.3954 ... 8.3985 N/mm) to 0.1 %;
+#   - plot_study.sh draws the speed-accuracy front (a non-empty PNG).
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+
+[ $# -eq 3 ] || fail "usage: refinement_study.sh ROLLNIP BATRA_PRM PLOT_STUDY_SH"
+rollnip="$1"
+base_prm="$2"
+plot_study="$3"
+require_executable rollnip "$rollnip"
+start_test refinement_study
+
+cp "$base_prm" study.prm
+cat >>study.prm <<PRM
+subsection Contact
+  set Values = 7.371101
+  set Conformity tolerance = 1e-7
+end
+subsection Study
+  set Refinement levels = 0, 1, 2, 3
+end
+subsection Output
+  set Directory = out
+  set Write VTU = false
+end
+PRM
+"$rollnip" study.prm >log.txt 2>&1 || { tail -20 log.txt; fail "rollnip study run failed"; }
+[ -f out/study.csv ] && [ -f out/study.txt ] || fail "study.csv or study.txt missing"
+pass "study.csv and study.txt written"
+
+python3 - out/study.csv out/study.txt <<'PY' || fail "study table checks"
+import csv, re, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+text = open(sys.argv[2]).read()
+def check(ok, message):
+    print(("ok:   " if ok else "FAIL: ") + message)
+    if not ok:
+        sys.exit(1)
+check(len(rows) == 4, f"{len(rows)} rows for 4 levels")
+cells = [int(r["cells"]) for r in rows]
+check(all(b == 4 * a for a, b in zip(cells, cells[1:])), f"cells {cells} grow x4")
+check(all(float(r["wall_s"]) > 0 and float(r["peak_memory_MB"]) > 0 for r in rows),
+      "wall time and memory recorded")
+e = [float(r["error_P_N_per_mm"]) for r in rows]
+check(all(b < a for a, b in zip(e, e[1:])), f"error of P falls: {e}")
+orders = dict(re.findall(r"^  (P|b) \[[^]]*\]\s+\S+\s+order (\S+)", text, re.M))
+check("P" in orders and 0.9 <= float(orders["P"]) <= 2.2, f"observed order of P {orders.get('P')} in [0.9, 2.2]")
+check("b" in orders and 1.5 <= float(orders["b"]) <= 3.5, f"observed order of b {orders.get('b')} in [1.5, 3.5]")
+P = float(re.search(r"^  P \[N/mm\]\s+(\S+)", text, re.M).group(1))
+check(abs(P / 8.397 - 1) < 1e-3, f"extrapolated P = {P} N/mm within 0.1 % of 8.397 N/mm")
+PY
+
+bash "$plot_study" out >/dev/null || fail "plot_study.sh failed"
+[ -s out/plots/study_front.png ] || fail "study_front.png missing or empty"
+pass "speed-accuracy front drawn"
