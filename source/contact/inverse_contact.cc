@@ -69,8 +69,13 @@ namespace rollnip
             for (unsigned int v = 0; v < 2; ++v)
               {
                 const Point<dim> X = cell->face(f)->vertex(v);
+                // Sectors reach 180 deg, where atan2 may return -pi for a
+                // round-off negative X[1]: angles are taken in [0, 2 pi).
+                double theta = std::atan2(X[1], X[0]);
+                if (theta < -0.5 * numbers::PI)
+                  theta += 2 * numbers::PI;
                 flat.insert(flat.end(),
-                            {std::atan2(X[1], X[0]),
+                            {theta,
                              X[0],
                              X[1],
                              double(cell->face(f)->vertex_dof_index(v, 0)),

@@ -87,8 +87,10 @@ namespace rollnip
     double       theta = std::asin(std::min(b / R0, 0.5));
     theta             = std::min(theta, 0.8 * parameters.geometry.sector_angle);
     double theta_prev = 0, q_prev = 0;
-    // The bracket [lo, hi] of theta0 around the target, once known.
-    double        lo = 0, hi = 0, q_lo = 0, q_hi = 0;
+    // The bracket [lo, hi] of theta0 around the target, once known, with
+    // f = log(q / target) at its ends (scaled down by the Illinois rule).
+    double        lo = 0, hi = 0, q_lo = 0, q_hi = 0, f_lo = 0, f_hi = 0;
+    int           last_side = 0; // -1: lo moved last, +1: hi moved last
     ContactResult r;
     for (unsigned int it = 1; it <= parameters.contact.max_iterations; ++it)
       {
@@ -103,10 +105,17 @@ namespace rollnip
               << std::endl;
         if (std::abs(q / target - 1) < parameters.contact.control_tolerance)
           return r;
-        if (q < target)
-          lo = theta, q_lo = q;
+        const double f    = std::log(q / target);
+        const int    side = q < target ? -1 : 1;
+        if (side < 0)
+          lo = theta, q_lo = q, f_lo = f;
         else
-          hi = theta, q_hi = q;
+          hi = theta, q_hi = q, f_hi = f;
+        // Illinois: when the same end moves twice, halve the other end's
+        // f, so that regula falsi does not stall on one side.
+        if (side == last_side)
+          (side < 0 ? f_hi : f_lo) *= 0.5;
+        last_side = side;
         // The discrete q(theta0) jumps where a surface node enters the
         // zone; a target inside a jump has no solution on this mesh.
         if (lo > 0 && hi > 0 && hi - lo < 1e-9 * hi &&
@@ -141,13 +150,16 @@ namespace rollnip
                            0.5 * theta,
                            std::min(2 * theta,
                                     0.95 * parameters.geometry.sector_angle));
-        // Once bracketed, interpolate linearly inside the bracket, but
-        // bisect when that lands near an end (as it does at a jump).
+        // Once bracketed: regula falsi (Illinois) on log q against
+        // log theta0, where q(theta0) is close to a power law; bisect if
+        // that does not land strictly inside the bracket.
         if (lo > 0 && hi > 0)
           {
-            const double t = (target - q_lo) / (q_hi - q_lo);
-            theta =
-              (t > 0.05 && t < 0.95) ? lo + t * (hi - lo) : 0.5 * (lo + hi);
+            const double x =
+              std::log(lo) - f_lo * std::log(hi / lo) / (f_hi - f_lo);
+            theta = std::exp(x);
+            if (!(theta > lo && theta < hi))
+              theta = std::sqrt(lo * hi);
           }
       }
     r.converged = false;
