@@ -1,0 +1,120 @@
+#!/usr/bin/env python3
+"""Runs the default scene (parameters/batra1980.prm, one nip, mesh level 2,
+no linear companion, no VTU) at the extremes of its parameters and prints a
+Markdown table: what each scene gave, or the message it stopped with.
+doc/extremes.md holds the table of one run and what it means.
+
+Usage: python3 benchmarks/extremes.py        (about two minutes)
+Uses build/rollnip, or $ROLLNIP_BIN.
+"""
+
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROLLNIP = os.environ.get("ROLLNIP_BIN", os.path.join(ROOT, "build", "rollnip"))
+BASE = os.path.join(ROOT, "parameters", "batra1980.prm")
+
+# (name, overrides as {subsection: {entry: value}})
+R0 = 60.7
+CASES = [
+    ("default: h/R0 = 0.22, theta0 = 8 deg", {}),
+    ("thin cover h/R0 = 0.02, theta0 = 4 deg",
+     {"Geometry": {"Inner radius": f"{R0 - 0.02 * R0:.6f}"}, "Contact": {"Values": "4"}}),
+    ("thin cover h/R0 = 0.02, theta0 = 8 deg",
+     {"Geometry": {"Inner radius": f"{R0 - 0.02 * R0:.6f}"}}),
+    ("thick cover h/R0 = 0.8", {"Geometry": {"Inner radius": f"{R0 - 0.8 * R0:.6f}"},
+                                "Mesh": {"Radial cells": "12"}}),
+    ("almost solid roll, R1 = 1 mm", {"Geometry": {"Inner radius": "1"},
+                                      "Mesh": {"Radial cells": "16", "Radial grading": "0.1"}}),
+    ("tiny nip theta0 = 0.5 deg", {"Contact": {"Values": "0.5"}}),
+    ("tiny nip theta0 = 0.25 deg", {"Contact": {"Values": "0.25"}}),
+    ("large nip theta0 = 14 deg", {"Contact": {"Values": "14"}}),
+    ("large nip theta0 = 16 deg", {"Contact": {"Values": "16"}}),
+    ("large nip theta0 = 18 deg", {"Contact": {"Values": "18"}}),
+    ("large nip theta0 = 20 deg", {"Contact": {"Values": "20"}}),
+    ("C2/C1 = 0 (C1 = 0.5 MPa)", {"Material": {"C1": "0.5", "C2": "0"}}),
+    ("C2/C1 = 99", {"Material": {"C1": "0.005", "C2": "0.495"}}),
+    ("C1 = 0 (C2 = 0.5 MPa)", {"Material": {"C1": "0", "C2": "0.5"}}),
+    ("flat indenter (Rbar = inf)", {"Contact": {"Indenter radius": "inf"}}),
+    ("small indenter Rbar = 5 mm, theta0 = 2 deg",
+     {"Contact": {"Indenter radius": "5", "Values": "2"}}),
+    ("small indenter Rbar = 5 mm, theta0 = 4 deg",
+     {"Contact": {"Indenter radius": "5", "Values": "4"}}),
+    ("1 initial load step", {"Load stepping": {"Initial steps": "1"}}),
+    ("100 initial load steps", {"Load stepping": {"Initial steps": "100"}}),
+    ("stiff cover, C1 = C2 = 250 MPa", {"Material": {"C1": "250", "C2": "250"}}),
+    ("soft cover, C1 = C2 = 0.0025 MPa", {"Material": {"C1": "0.0025", "C2": "0.0025"}}),
+    ("same scene in m and Pa", {"Geometry": {"Inner radius": "0.0472", "Outer radius": "0.0607"},
+                                "Material": {"C1": "250000", "C2": "250000"},
+                                "Contact": {"Indenter radius": "0.0762"}}),
+]
+
+
+def key_values(path):
+    values = {}
+    if os.path.exists(path):
+        for line in open(path):
+            if " = " in line and not line.startswith("#"):
+                k, v = line.split(" = ", 1)
+                values[k.strip()] = v.strip()
+    return values
+
+
+def main():
+    if not os.access(ROLLNIP, os.X_OK):
+        print(f"extremes: error: {ROLLNIP} not found; build it with: bash scripts/setup.sh",
+              file=sys.stderr)
+        sys.exit(1)
+    print("| scene | exit | theta0 deg | P (N/mm) | u0 (mm) | max strain | min J | conformity | P from traction | wall s | message |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    with tempfile.TemporaryDirectory(prefix="rollnip-extremes.") as tmp:
+        for name, overrides in CASES:
+            out = os.path.join(tmp, "out")
+            text = open(BASE).read() + "\n# --- extremes overrides ---\n"
+            overrides = {**overrides}
+            overrides.setdefault("Contact", {})
+            overrides["Contact"] = {"Values": "8", "Compare with linear theory": "false",
+                                    **overrides["Contact"]}
+            overrides["Output"] = {"Directory": out, "Write VTU": "false",
+                                   "Print timing": "false"}
+            for section, entries in overrides.items():
+                text += f"subsection {section}\n"
+                for k, v in entries.items():
+                    text += f"  set {k} = {v}\n"
+                text += "end\n"
+            prm = os.path.join(tmp, "run.prm")
+            open(prm, "w").write(text)
+            subprocess.run(["rm", "-rf", out])
+            t0 = time.perf_counter()
+            p = subprocess.run([ROLLNIP, prm], capture_output=True, text=True)
+            wall = time.perf_counter() - t0
+            s = key_values(os.path.join(out, "summary.txt"))
+            c = key_values(os.path.join(out, "contact.txt"))
+            message = ""
+            for line in p.stderr.splitlines():
+                if line.startswith("rollnip: error:"):
+                    message = line[len("rollnip: error:"):].strip()
+            traction = ""
+            nip = os.path.join(out, "nip_characteristic.csv")
+            if os.path.exists(nip):
+                rows = open(nip).read().splitlines()
+                if len(rows) > 1:
+                    head = rows[0].split(",")
+                    row = dict(zip(head, rows[1].split(",")))
+                    P = float(row["P_N_per_mm"])
+                    traction = f"{100 * (float(row['P_from_traction_N_per_mm']) / P - 1):+.3f} %" if P else ""
+            strain = s.get("max_principal_stretch", "")
+            strain = f"{100 * (float(strain) - 1):.1f} %" if strain else ""
+            print(f"| {name} | {p.returncode} | {c.get('half_nip_angle_theta0_deg', '')} | "
+                  f"{c.get('nip_load_P_N_per_mm', '')} | {c.get('indentation_u0_mm', '')} | "
+                  f"{strain} | {s.get('min_J_gauss', '')} | "
+                  f"{c.get('conformity_max_gap_over_u0', '')} | {traction} | {wall:.1f} | "
+                  f"{message.replace('|', '/')} |", flush=True)
+
+
+if __name__ == "__main__":
+    main()
