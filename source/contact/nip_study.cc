@@ -26,19 +26,6 @@ namespace rollnip
       return std::isfinite(Rb) ? 1. / (1. / R0 + 1. / Rb) : R0;
     }
 
-    /// The x-resultant of the surface traction from the stress, two-sided:
-    /// P = 2 sum over segments of mean(-sigma_nn) dx2, since on the outer
-    /// arc (counter-clockwise) n ds = (dx2, -dx1).
-    double
-    load_from_traction(const std::vector<OuterSurfacePoint> &outer)
-    {
-      double P = 0;
-      for (unsigned int i = 1; i < outer.size(); ++i)
-        P += (outer[i].normal_pressure + outer[i - 1].normal_pressure) *
-             (outer[i].y - outer[i - 1].y);
-      return P; // 2 * (1/2 mean) * dx2
-    }
-
     /// Points of the indenter outline near the nip (deformed configuration)
     /// for the plot of the deformed surface (the paper's Fig. 7).
     void
@@ -63,6 +50,18 @@ namespace rollnip
       });
     }
   } // namespace
+
+  double
+  load_from_traction(const std::vector<OuterSurfacePoint> &outer)
+  {
+    // On the outer arc (counter-clockwise) n ds = (dx2, -dx1), so
+    // P = 2 sum over segments of mean(-sigma_nn) dx2.
+    double P = 0;
+    for (unsigned int i = 1; i < outer.size(); ++i)
+      P += (outer[i].normal_pressure + outer[i - 1].normal_pressure) *
+           (outer[i].y - outer[i - 1].y);
+    return P; // 2 * (1/2 mean) * dx2
+  }
 
   ContactResult
   solve_controlled_nip(InverseContact                  &contact,

@@ -23,6 +23,11 @@ namespace rollnip
     unsigned int            n_cells = 0;
   };
 
+  /// The two-sided load P [N/mm] from the normal Cauchy traction -sigma_nn
+  /// on the deformed outer surface (the check of the applied P).
+  double
+  load_from_traction(const std::vector<OuterSurfacePoint> &outer);
+
   /**
    * Runs the contact scenes of the Contact subsection (doc/intro.md,
    * section 7): for each of Contact/Values, the nip controlled by theta0,
