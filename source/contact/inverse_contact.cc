@@ -406,7 +406,11 @@ namespace rollnip
         result.converged = false;
         result.message   = "the contact pressure is negative somewhere (min " +
                          std::to_string(result.min_pressure) +
-                         " MPa): the surface would separate inside the zone";
+                         " MPa): the surface would separate inside the zone" +
+                         (m < 4 ? " (only " + std::to_string(m) +
+                                    " surface node(s) lie in the zone: refine "
+                                    "the mesh near the nip)"
+                                : std::string());
       }
     if (result.converged && result.penetration > parameters.contact.tolerance)
       {
