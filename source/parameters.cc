@@ -600,6 +600,11 @@ namespace rollnip
       for (const auto &v :
            Utilities::split_string_list(prm.get("Refinement levels")))
         levels.push_back(std::stoi(v));
+      // Richardson extrapolation and the rates assume h halves per row.
+      for (unsigned int i = 1; i < levels.size(); ++i)
+        AssertThrow(levels[i] == levels[i - 1] + 1,
+                    ExcMessage("Study/Refinement levels: the levels must be "
+                               "consecutive and increasing (e.g. 0, 1, 2, 3)"));
       elements.clear();
       for (const auto &v : Utilities::split_string_list(prm.get("Elements")))
         elements.push_back(v == "Q2-P1" ? Element::q2_p1 : Element::q1_p0);

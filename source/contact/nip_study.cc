@@ -117,7 +117,7 @@ namespace rollnip
         last_side = side;
         // The discrete q(theta0) jumps where a surface node enters the
         // zone; a target inside a jump has no solution on this mesh.
-        if (lo > 0 && hi > 0 && hi - lo < 1e-9 * hi &&
+        if (lo > 0 && hi > 0 && hi - lo < 1e-6 * hi &&
             (q_hi - q_lo) > 100 * parameters.contact.control_tolerance * target)
           {
             std::ostringstream msg;

@@ -3,7 +3,10 @@
 #include <rollnip/solvers/sparse_direct.h>
 
 #include <Amesos.h>
+#include <Amesos_config.h>
+#ifdef HAVE_AMESOS_MUMPS
 #include <Amesos_Mumps.h>
+#endif
 
 namespace rollnip
 {
@@ -26,9 +29,11 @@ namespace rollnip
     AssertThrow(solver != nullptr,
                 ExcMessage("Linear solver/Direct solver: '" + solver_name +
                            "' is not available in this Trilinos"));
+#ifdef HAVE_AMESOS_MUMPS
     if (auto *mumps = dynamic_cast<Amesos_Mumps *>(solver.get()))
       if (workspace_relaxation > 0)
         mumps->SetICNTL(14, workspace_relaxation);
+#endif
     ++n_analyses;
     return solver->SymbolicFactorization() == 0;
   }
@@ -38,7 +43,10 @@ namespace rollnip
   {
     const Epetra_CrsMatrix *A = &matrix.trilinos_matrix();
     ++n_factorisations;
-    if (A == analysed_matrix && solver && solver->NumericFactorization() == 0)
+    // A numeric failure with the current analysis is retried only with
+    // more workspace than that analysis had.
+    const bool numeric_failure = A == analysed_matrix && solver;
+    if (numeric_failure && solver->NumericFactorization() == 0)
       return;
 
     // A new pattern, or a numeric failure with the old analysis: analyse
@@ -46,9 +54,9 @@ namespace rollnip
     linear_problem.SetOperator(const_cast<Epetra_CrsMatrix *>(A));
     analysed_matrix  = A;
     const bool mumps = solver_name == "Amesos_Mumps";
-    for (const int r : {relaxation, 100, 400})
+    for (const int r : {0, 100, 400})
       {
-        if (r < relaxation)
+        if (r < relaxation || (numeric_failure && r == relaxation))
           continue;
         if (analyse(mumps ? r : 0) && solver->NumericFactorization() == 0)
           {

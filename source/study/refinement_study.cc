@@ -185,9 +185,19 @@ namespace rollnip
               p.contact.values.resize(1);
             pcout << "Study: " << element_name(element) << ", level " << level
                   << std::endl;
-            Run        run;
-            const auto start = std::chrono::steady_clock::now();
-            const int  code  = run_scene(p, run);
+            Run         run;
+            const auto  start = std::chrono::steady_clock::now();
+            int         code  = 0;
+            std::string thrown;
+            try
+              {
+                code = run_scene(p, run);
+              }
+            catch (const std::exception &e)
+              {
+                code   = 1;
+                thrown = e.what();
+              }
             run.wall =
               Utilities::MPI::max(std::chrono::duration<double>(
                                     std::chrono::steady_clock::now() - start)
@@ -202,8 +212,10 @@ namespace rollnip
             if (code != 0)
               {
                 failure = element_name(element) + " at level " +
-                          std::to_string(level) + " did not converge (see " +
-                          p.output.directory + ")";
+                          std::to_string(level) +
+                          (thrown.empty() ? " did not converge"
+                                          : " failed: " + thrown) +
+                          " (see " + p.output.directory + ")";
                 break;
               }
             runs.push_back(run);
@@ -220,7 +232,7 @@ namespace rollnip
       csv << ',' << q.key;
     for (const auto &q : quantities)
       csv << ",error_" << q.key;
-    csv << ",wall_s,peak_memory_MB\n" << std::setprecision(10);
+    csv << ",wall_s,process_peak_memory_MB\n" << std::setprecision(10);
     for (const auto element : elements)
       {
         std::vector<Run> mine;
@@ -254,12 +266,14 @@ namespace rollnip
               }
             for (unsigned int q = 0; q < quantities.size(); ++q)
               {
-                const double e = std::abs(r.values[q] / exact[q] - 1);
+                const double e = exact[q] != 0
+                                   ? std::abs(r.values[q] / exact[q] - 1)
+                                   : std::abs(r.values[q]);
                 table.add_value(quantities[q].error, e);
                 csv << ',' << e;
               }
             table.add_value("wall [s]", r.wall);
-            table.add_value("memory [MB]", r.memory);
+            table.add_value("process peak [MB]", r.memory);
             csv << ',' << r.wall << ',' << r.memory << '\n';
           }
         for (unsigned int q = 0; q < quantities.size(); ++q)
@@ -274,11 +288,13 @@ namespace rollnip
                 e, ConvergenceTable::reduction_rate_log2);
           }
         table.set_precision("wall [s]", 3);
-        table.set_precision("memory [MB]", 1);
+        table.set_precision("process peak [MB]", 1);
 
         text << "Refinement study, " << element_name(element)
              << " (e = relative error against the Richardson-extrapolated "
-                "value; rates are log2 of the error reduction per level)\n";
+                "value; rates are log2 of the error reduction per level; "
+                "process peak = the largest resident memory of the process "
+                "so far, so it measures the largest run up to that row)\n";
         table.write_text(text, TableHandler::org_mode_table);
         text << "Extrapolated values (observed order from the last three "
                 "levels):\n";

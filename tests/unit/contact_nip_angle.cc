@@ -93,7 +93,7 @@ main(int argc, char **argv)
   // Just above the node the sequence is monotone; its observed order (from
   // three successive differences) is about 1: the contact pressure has a
   // square-root edge and the last, short segment from the node to theta0
-  // resolves it poorly. Measured 1.12 and 1.20; level 4 gives 1.13 again.
+  // resolves it poorly. Measured 1.12 and 1.17; level 4 gives 1.13 again.
   const double d[3] = {above[1] - above[0],
                        above[2] - above[1],
                        above[3] - above[2]};

@@ -35,7 +35,8 @@ main(int argc, char **argv)
         "subsection Geometry\n set Inner radius = " + inner.str() +
         "\n set Outer radius = 60.7\n set Sector angle = 15\nend\n"
         "subsection Mesh\n set Radial cells = 4\n"
-        " set Circumferential cells = 160\n set Global refinements = 0\nend\n"
+        " set Circumferential cells = 160\n set Circumferential grading = "
+        "1\n set Global refinements = 0\nend\n"
         "subsection Material\n set Theory = linear\nend\n"
         "subsection Contact\n set Mode = nip angle\n set Values = 3\n"
         " set Indenter radius = 76.2\nend\n");
