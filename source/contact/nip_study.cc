@@ -240,19 +240,14 @@ namespace rollnip
                 break;
               }
 
-            const SurfaceData data   = nonlinear.surface_data(1.);
-            row.max_principal_strain = data.extremes.max_principal_stretch - 1;
-            row.bond_sigma_rr_min    = 0;
-            for (const auto &p : data.bond)
-              {
-                row.bond_sigma_rr_min =
-                  std::min(row.bond_sigma_rr_min, p.sigma_rr);
-                row.bond_sigma_rtheta_max =
-                  std::max(row.bond_sigma_rtheta_max, std::abs(p.sigma_rtheta));
-              }
-            row.load_from_traction = load_from_traction(data.outer);
-            const double b         = row.nonlinear.half_chord;
-            row.hertz_load         = numbers::PI * b * b * 4 * G / (4 * R);
+            const SurfaceData data    = nonlinear.surface_data(1.);
+            row.max_principal_strain  = data.extremes.max_principal_stretch - 1;
+            const BondExtremes bond   = bond_extremes(data.bond);
+            row.bond_sigma_rr_min     = bond.sigma_rr_min;
+            row.bond_sigma_rtheta_max = bond.sigma_rtheta_max_abs;
+            row.load_from_traction    = load_from_traction(data.outer);
+            const double b            = row.nonlinear.half_chord;
+            row.hertz_load            = numbers::PI * b * b * 4 * G / (4 * R);
             row.thin_layer_load = 2 * G * std::pow(b, 5) / (15 * R * h * h * h);
             pcout << "Nip " << n + 1 << ": P from the applied pressure "
                   << std::setprecision(6) << row.nonlinear.nip_load

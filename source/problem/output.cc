@@ -240,16 +240,11 @@ namespace rollnip
         peak_applied = std::max(peak_applied, p.applied_pressure);
         peak_normal  = std::max(peak_normal, p.normal_pressure);
       }
-    double bond_rr_min = std::numeric_limits<double>::max();
-    double bond_rr_max = -std::numeric_limits<double>::max();
-    double bond_rt     = 0;
-    for (const auto &p : data.bond)
-      {
-        bond_rr_min = std::min(bond_rr_min, p.sigma_rr);
-        bond_rr_max = std::max(bond_rr_max, p.sigma_rr);
-        bond_rt     = std::max(bond_rt, std::abs(p.sigma_rtheta));
-      }
-    unsigned int n_newton = 0;
+    const BondExtremes bond        = bond_extremes(data.bond);
+    const double       bond_rr_min = bond.sigma_rr_min;
+    const double       bond_rr_max = bond.sigma_rr_max;
+    const double       bond_rt     = bond.sigma_rtheta_max_abs;
+    unsigned int       n_newton    = 0;
     for (const auto &s : step_records)
       n_newton += s.newton_iterations;
     const auto times = timer.get_summary_data(TimerOutput::total_wall_time);

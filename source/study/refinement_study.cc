@@ -112,20 +112,15 @@ namespace rollnip
               problem.silence_timer();
               return 1;
             }
-          const SurfaceData data = problem.surface_data(1.);
-          double            srr = 0, srt = 0;
-          for (const auto &b : data.bond)
-            {
-              srr = std::min(srr, b.sigma_rr);
-              srt = std::max(srt, std::abs(b.sigma_rtheta));
-            }
-          run.cells  = problem.n_cells();
-          run.dofs   = problem.n_dofs();
-          run.values = {-problem.radial_displacement_at(
+          const SurfaceData  data = problem.surface_data(1.);
+          const BondExtremes bond = bond_extremes(data.bond);
+          run.cells               = problem.n_cells();
+          run.dofs                = problem.n_dofs();
+          run.values              = {-problem.radial_displacement_at(
                           Point<dim>(p.geometry.outer_radius, 0.)),
-                        data.extremes.max_principal_stretch - 1,
-                        srr,
-                        srt};
+                                     data.extremes.max_principal_stretch - 1,
+                                     bond.sigma_rr_min,
+                                     bond.sigma_rtheta_max_abs};
         }
       catch (...)
         {

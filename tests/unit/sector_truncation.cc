@@ -38,14 +38,12 @@ namespace
     InverseContact      contact(problem, parameters);
     const ContactResult r = contact.solve(parameters.contact.values[0]);
     AssertThrow(r.converged, ExcMessage(r.message));
-    const SurfaceData data = problem.surface_data(1.);
-    double            srr = 0, srt = 0;
-    for (const auto &b : data.bond)
-      {
-        srr = std::min(srr, b.sigma_rr);
-        srt = std::max(srt, std::abs(b.sigma_rtheta));
-      }
-    return {r.nip_load, r.indentation, r.peak_pressure, srr, srt};
+    const BondExtremes bond = bond_extremes(problem.surface_data(1.).bond);
+    return {r.nip_load,
+            r.indentation,
+            r.peak_pressure,
+            bond.sigma_rr_min,
+            bond.sigma_rtheta_max_abs};
   }
 } // namespace
 

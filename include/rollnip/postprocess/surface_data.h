@@ -3,6 +3,8 @@
 
 #include <rollnip/global.h>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace rollnip
@@ -26,6 +28,31 @@ namespace rollnip
     double theta; ///< reference angle [rad]
     double sigma_rr, sigma_rtheta, sigma_thetatheta, sigma_zz;
   };
+
+  /// Extremes of the bond-surface stresses [MPa]; all 0 for no points
+  /// (ranks other than 0 hold none).
+  struct BondExtremes
+  {
+    double sigma_rr_min = 0, sigma_rr_max = 0;
+    double sigma_rtheta_max_abs = 0;
+  };
+
+  inline BondExtremes
+  bond_extremes(const std::vector<BondSurfacePoint> &bond)
+  {
+    BondExtremes e;
+    if (bond.empty())
+      return e;
+    e.sigma_rr_min = e.sigma_rr_max = bond.front().sigma_rr;
+    for (const auto &p : bond)
+      {
+        e.sigma_rr_min = std::min(e.sigma_rr_min, p.sigma_rr);
+        e.sigma_rr_max = std::max(e.sigma_rr_max, p.sigma_rr);
+        e.sigma_rtheta_max_abs =
+          std::max(e.sigma_rtheta_max_abs, std::abs(p.sigma_rtheta));
+      }
+    return e;
+  }
 
   /// Cell-wide extremes over the whole cover.
   struct FieldExtremes
