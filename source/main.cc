@@ -35,7 +35,8 @@ int
 main(int argc, char **argv)
 {
   using namespace rollnip;
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // Threads fill the cores the MPI processes leave (DEAL_II_NUM_THREADS caps).
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
 
   std::string file;

@@ -406,11 +406,31 @@ namespace rollnip
     {
       prm.enter_subsection("Linear solver");
       declare_documented(prm,
+                         "Method",
+                         "direct",
+                         Patterns::Selection("direct|gmres-amg"),
+                         "direct: sparse LU (robust; best up to about a "
+                         "million DoFs in 2D, see doc/accuracy.md); gmres-amg: "
+                         "GMRES with a block preconditioner, AMG on the "
+                         "displacement block and the pressure mass matrix "
+                         "for the Schur complement");
+      declare_documented(prm,
                          "Direct solver",
                          "Amesos_Mumps",
                          Patterns::Selection("Amesos_Mumps|Amesos_Klu"),
                          "Sparse direct solver (through Trilinos Amesos) for "
                          "the indefinite, non-symmetric Newton system");
+      declare_documented(prm,
+                         "Iterative tolerance",
+                         "1e-9",
+                         Patterns::Double(1e-14, 1e-2),
+                         "gmres-amg: stop when |b - K x| <= this |b|");
+      declare_documented(prm,
+                         "Max iterations",
+                         "500",
+                         Patterns::Integer(1, 100000),
+                         "gmres-amg: iterations per linear solve before the "
+                         "run is refused");
       prm.leave_subsection();
     }
 
@@ -418,7 +438,10 @@ namespace rollnip
     LinearSolver::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Linear solver");
-      direct_solver = prm.get("Direct solver");
+      method              = prm.get("Method");
+      direct_solver       = prm.get("Direct solver");
+      iterative_tolerance = prm.get_double("Iterative tolerance");
+      max_iterations      = prm.get_integer("Max iterations");
       prm.leave_subsection();
     }
 

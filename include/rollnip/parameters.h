@@ -161,7 +161,10 @@ namespace rollnip
 
     struct LinearSolver
     {
-      std::string direct_solver; ///< an Amesos solver name
+      std::string  method;              ///< "direct" or "gmres-amg"
+      std::string  direct_solver;       ///< an Amesos solver name
+      double       iterative_tolerance; ///< relative residual of GMRES
+      unsigned int max_iterations;      ///< of GMRES per solve
 
       static void
       declare(ParameterHandler &prm);

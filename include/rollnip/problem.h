@@ -21,6 +21,7 @@
 #include <rollnip/material/mooney_rivlin.h>
 #include <rollnip/parameters.h>
 #include <rollnip/postprocess/surface_data.h>
+#include <rollnip/solvers/block_amg.h>
 #include <rollnip/solvers/sparse_direct.h>
 
 #include <functional>
@@ -243,6 +244,13 @@ namespace rollnip
     // setup.cc
     void
     make_constraints();
+    void
+    set_up_schur_blocks();
+    bool
+    use_iterative_solver() const
+    {
+      return parameters.linear_solver.method == "gmres-amg";
+    }
 
     /// Whether face @p f of @p cell carries the follower pressure
     /// (assembly.cc).
@@ -292,6 +300,10 @@ namespace rollnip
 
     TrilinosWrappers::SparseMatrix system_matrix;
     SparseDirectSolver             direct_solver;
+    BlockAMGSolver                 iterative_solver;
+    /// [A 0; 0 M_p/G] for the AMG of Linear solver/Method = gmres-amg.
+    TrilinosWrappers::SparseMatrix preconditioner_matrix;
+    std::vector<std::vector<bool>> constant_modes;
     TrilinosWrappers::MPI::Vector  solution; ///< owned entries
     TrilinosWrappers::MPI::Vector  locally_relevant_solution;
     TrilinosWrappers::MPI::Vector  system_rhs;     ///< residual R

@@ -37,6 +37,16 @@ namespace rollnip
   {
     TimerOutput::Scope t(timer, "linear solve");
     ++n_linear_solves;
+    if (use_iterative_solver())
+      {
+        iterative_solver.initialize(
+          system_matrix,
+          preconditioner_matrix,
+          pressure_dofs,
+          constant_modes,
+          parameters.discretization.displacement_degree() > 1);
+        return;
+      }
     const std::string before = direct_solver.name();
     direct_solver.factorize(system_matrix);
     if (direct_solver.name() != before)
@@ -49,7 +59,10 @@ namespace rollnip
                                   TrilinosWrappers::MPI::Vector       &x)
   {
     TimerOutput::Scope t(timer, "linear solve");
-    direct_solver.solve(rhs, x);
+    if (use_iterative_solver())
+      iterative_solver.solve(rhs, x);
+    else
+      direct_solver.solve(rhs, x);
     constraints.distribute(x);
   }
 

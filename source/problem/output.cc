@@ -1,3 +1,4 @@
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/dofs/dof_tools.h>
 
 #include <deal.II/fe/fe_q.h>
@@ -275,6 +276,10 @@ namespace rollnip
           << "assemblies = " << n_assemblies << '\n'
           << "linear_solves = " << n_linear_solves << '\n'
           << "symbolic_factorisations = " << direct_solver.n_analyses << '\n'
+          << "linear_method = " << parameters.linear_solver.method << '\n'
+          << "gmres_iterations = " << iterative_solver.n_iterations << '\n'
+          << "gmres_solves = " << iterative_solver.n_solves << '\n'
+          << "threads = " << MultithreadInfo::n_threads() << '\n'
           << "load_resultant_x_N_per_mm = " << R[0] << '\n'
           << "load_resultant_y_N_per_mm = " << R[1] << '\n'
           << "nip_load_P_N_per_mm = " << (two_sided ? -2. : -1.) * R[0] << '\n'

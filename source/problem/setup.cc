@@ -33,6 +33,8 @@ namespace rollnip
       , material(parameters.material)
       , dof_handler(triangulation)
       , direct_solver(parameters.linear_solver.direct_solver)
+      , iterative_solver(parameters.linear_solver.iterative_tolerance,
+                         parameters.linear_solver.max_iterations)
       , output_directory(parameters.output.directory)
   {
     auto load =
@@ -101,6 +103,18 @@ namespace rollnip
                          locally_owned_dofs,
                          dsp,
                          mpi_communicator);
+    if (use_iterative_solver())
+      {
+        preconditioner_matrix.reinit(locally_owned_dofs,
+                                     locally_owned_dofs,
+                                     dsp,
+                                     mpi_communicator);
+        DoFTools::extract_constant_modes(dof_handler,
+                                         fe->component_mask(
+                                           FEValuesExtractors::Vector(0)),
+                                         constant_modes);
+        set_up_schur_blocks();
+      }
 
     solution.reinit(locally_owned_dofs, mpi_communicator);
     system_rhs.reinit(locally_owned_dofs, mpi_communicator);
@@ -119,6 +133,55 @@ namespace rollnip
           << dof_handler.n_dofs() << " DoFs (" << fe->get_name() << "), "
           << Utilities::MPI::n_mpi_processes(mpi_communicator)
           << " MPI process(es)" << std::endl;
+  }
+
+  /**
+   * G times the inverse of each cell's pressure mass matrix, for the Schur
+   * complement of the gmres-amg solver (block_amg.h). The pressure is
+   * discontinuous, so M_p is block diagonal; the reference volume is the
+   * current one of an incompressible body.
+   */
+  void
+  RollProblem::set_up_schur_blocks()
+  {
+    const unsigned int degree = parameters.discretization.displacement_degree();
+    FEValues<dim>      fe_values(*mapping,
+                            *fe,
+                            QGauss<dim>(degree + 1),
+                            update_values | update_JxW_values);
+    const FEValuesExtractors::Scalar pressure_unknown(dim);
+    std::vector<unsigned int>        local_p;
+    for (unsigned int i = 0; i < fe->n_dofs_per_cell(); ++i)
+      if (fe->system_to_component_index(i).first == dim)
+        local_p.push_back(i);
+    const unsigned int n_p = local_p.size();
+
+    std::vector<std::vector<types::global_dof_index>> blocks;
+    std::vector<FullMatrix<double>>                   inverses;
+    std::vector<types::global_dof_index> dof_indices(fe->n_dofs_per_cell());
+    FullMatrix<double>                   mass(n_p, n_p);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          mass = 0;
+          for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+            for (unsigned int a = 0; a < n_p; ++a)
+              for (unsigned int b = 0; b < n_p; ++b)
+                mass(a, b) += fe_values[pressure_unknown].value(local_p[a], q) *
+                              fe_values[pressure_unknown].value(local_p[b], q) *
+                              fe_values.JxW(q);
+          cell->get_dof_indices(dof_indices);
+          std::vector<types::global_dof_index> block;
+          for (const auto a : local_p)
+            block.push_back(dof_indices[a]);
+          FullMatrix<double> inverse(n_p, n_p);
+          inverse.invert(mass);
+          inverse *= material.shear_modulus();
+          blocks.push_back(std::move(block));
+          inverses.push_back(std::move(inverse));
+        }
+    iterative_solver.set_schur_blocks(std::move(blocks), std::move(inverses));
   }
 
   /**

@@ -9,7 +9,7 @@
 # 'MPIEXEC -np 2', each with its own output directory, then compares with
 # numdiff (relative tolerance 1e-8, absolute 1e-12, fields split at blanks,
 # commas and '='): summary.txt without the lines that must differ (timings,
-# mpi_processes), outer_surface.csv and bond_surface.csv.
+# mpi_processes, threads), outer_surface.csv and bond_surface.csv.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
@@ -93,7 +93,7 @@ pass "status = converged"
 
 # Everything except the timings and the process count must agree.
 for dir in out_serial out_parallel; do
-  grep -v -E '^(wall_time_s|time_[a-z_]*_s|mpi_processes) =' \
+  grep -v -E '^(wall_time_s|time_[a-z_]*_s|mpi_processes|threads) =' \
     "$dir/summary.txt" > "$dir/summary_compared.txt"
 done
 

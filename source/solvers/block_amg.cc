@@ -1,0 +1,109 @@
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/vector.h>
+
+#include <rollnip/solvers/block_amg.h>
+
+#include <cstdlib>
+#include <sstream>
+
+namespace rollnip
+{
+  BlockAMGSolver::BlockAMGSolver(const double       tolerance,
+                                 const unsigned int max_iterations)
+      : tolerance(tolerance)
+      , max_iterations(max_iterations)
+  {}
+
+  void
+  BlockAMGSolver::set_schur_blocks(
+    std::vector<std::vector<types::global_dof_index>> &&dofs,
+    std::vector<FullMatrix<double>>                   &&inverse_masses)
+  {
+    block_dofs     = std::move(dofs);
+    block_inverses = std::move(inverse_masses);
+  }
+
+  void
+  BlockAMGSolver::initialize(
+    const TrilinosWrappers::SparseMatrix &K,
+    const TrilinosWrappers::SparseMatrix &augmented,
+    const IndexSet                       &pressure_dofs,
+    const std::vector<std::vector<bool>> &constant_modes,
+    const bool                            higher_order)
+  {
+    matrix   = &K;
+    pressure = pressure_dofs;
+
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic              = true;
+    data.higher_order_elements = higher_order;
+    data.constant_modes        = constant_modes;
+    data.smoother_sweeps       = 2;
+    data.aggregation_threshold = 0.02;
+    amg.initialize(augmented, data);
+
+    ++n_setups;
+  }
+
+  void
+  BlockAMGSolver::vmult(TrilinosWrappers::MPI::Vector       &z,
+                        const TrilinosWrappers::MPI::Vector &r) const
+  {
+    // z_u = A^-1 r_u (AMG on [A 0; 0 M_p/G] applied to [r_u; 0]).
+    tmp = r;
+    for (const auto i : pressure)
+      tmp[i] = 0;
+    tmp.compress(VectorOperation::insert);
+    amg.vmult(z, tmp);
+    for (const auto i : pressure)
+      z[i] = 0;
+    z.compress(VectorOperation::insert);
+    // z_p = S^-1 (B z_u - r_p), with B z_u the pressure rows of K [z_u; 0].
+    matrix->vmult(tmp, z);
+    Vector<double> local, result;
+    for (unsigned int b = 0; b < block_dofs.size(); ++b)
+      {
+        const auto &dofs = block_dofs[b];
+        local.reinit(dofs.size());
+        result.reinit(dofs.size());
+        for (unsigned int k = 0; k < dofs.size(); ++k)
+          local(k) = tmp[dofs[k]] - r[dofs[k]];
+        block_inverses[b].vmult(result, local);
+        for (unsigned int k = 0; k < dofs.size(); ++k)
+          z[dofs[k]] = result(k);
+      }
+    z.compress(VectorOperation::insert);
+  }
+
+  void
+  BlockAMGSolver::solve(const TrilinosWrappers::MPI::Vector &b,
+                        TrilinosWrappers::MPI::Vector       &x)
+  {
+    Assert(matrix, ExcMessage("initialize() first"));
+    ++n_solves;
+    tmp.reinit(b, true);
+    x                    = 0;
+    const double  b_norm = b.l2_norm();
+    SolverControl control(max_iterations, tolerance * b_norm, false, false);
+    SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData data;
+    data.max_n_tmp_vectors     = 100;
+    data.right_preconditioning = true;
+    SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(control, data);
+    try
+      {
+        gmres.solve(*matrix, x, b, *this);
+      }
+    catch (const SolverControl::NoConvergence &e)
+      {
+        n_iterations += control.last_step();
+        std::ostringstream what;
+        what << "Linear solver/Method = gmres-amg: GMRES reached a relative "
+             << "residual of " << e.last_residual / b_norm << " after "
+             << e.last_step << " iterations (tolerance " << tolerance
+             << "); use the direct method";
+        AssertThrow(false, ExcMessage(what.str()));
+      }
+    n_iterations += control.last_step();
+  }
+} // namespace rollnip
