@@ -307,6 +307,14 @@ namespace rollnip
                          "After a step that converged fast the increment is "
                          "multiplied by this; 1 gives fixed equal steps");
       declare_documented(prm,
+                         "Extrapolate",
+                         "true",
+                         Patterns::Bool(),
+                         "Start each load step's Newton iteration from the "
+                         "linear extrapolation of the last two converged "
+                         "states (fewer iterations); if that start fails, the "
+                         "step is retried from the last converged state");
+      declare_documented(prm,
                          "Fast Newton iterations",
                          "4",
                          Patterns::Integer(1),
@@ -333,6 +341,7 @@ namespace rollnip
       prm.enter_subsection("Load stepping");
       n_initial_steps        = prm.get_integer("Initial steps");
       growth_factor          = prm.get_double("Growth factor");
+      extrapolate            = prm.get_bool("Extrapolate");
       fast_newton_iterations = prm.get_integer("Fast Newton iterations");
       max_cutbacks           = prm.get_integer("Maximum cutbacks");
       min_increment          = prm.get_double("Minimum increment");

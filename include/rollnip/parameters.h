@@ -133,6 +133,7 @@ namespace rollnip
     {
       unsigned int n_initial_steps;
       double       growth_factor;
+      bool         extrapolate; ///< predictor from the last two states
       unsigned int fast_newton_iterations;
       unsigned int max_cutbacks;
       double       min_increment;

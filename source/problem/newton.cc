@@ -183,11 +183,16 @@ namespace rollnip
                              : first_increment > 0 ? first_increment
                                                    : 1. / ls.n_initial_steps;
     unsigned int step = 0, cutbacks_in_a_row = 0;
+    // The converged state before the current one, for the predictor.
+    TrilinosWrappers::MPI::Vector previous(solution);
+    double                        previous_lambda = -1;
 
     if (!from_current_state)
       {
         solution                  = 0;
         locally_relevant_solution = solution;
+        previous                  = 0;
+        previous_lambda           = 0; // u = 0 at zero load
       }
     if (log_steps)
       pcout << " step  load fraction  Newton  |R_u|/|F_ext|   u_r(R0,0) [mm]"
@@ -196,8 +201,28 @@ namespace rollnip
     while (lambda < 1. - 1e-12)
       {
         const double target = std::min(1., lambda + increment);
-        if (solve_load_step(target, step + 1))
+        // Predictor: u(target) ~ u + (target - lambda) du/dlambda.
+        const TrilinosWrappers::MPI::Vector converged(solution);
+        bool                                solved = false;
+        if (ls.extrapolate && previous_lambda >= 0 && lambda > previous_lambda)
           {
+            solution.sadd(1. + (target - lambda) / (lambda - previous_lambda),
+                          -(target - lambda) / (lambda - previous_lambda),
+                          previous);
+            locally_relevant_solution = solution;
+            solved                    = solve_load_step(target, step + 1);
+            if (!solved)
+              {
+                solution                  = converged;
+                locally_relevant_solution = solution;
+              }
+          }
+        if (!solved)
+          solved = solve_load_step(target, step + 1);
+        if (solved)
+          {
+            previous        = converged;
+            previous_lambda = lambda;
             ++step;
             lambda                         = target;
             cutbacks_in_a_row              = 0;
