@@ -621,6 +621,21 @@ namespace rollnip
                          Patterns::List(Patterns::Selection("Q1-P0|Q2-P1"), 0),
                          "Elements to compare in the study (e.g. Q1-P0, "
                          "Q2-P1); empty: Discretization/Element only");
+      declare_documented(prm,
+                         "Sector angles",
+                         "",
+                         Patterns::List(Patterns::Double(), 0),
+                         "Sector angles [deg] to compare in the study (e.g. "
+                         "30, 45, 90, 180); Mesh/Circumferential cells is "
+                         "scaled with the angle, and 180 makes the far edge a "
+                         "symmetry edge (the untruncated half roll); empty: "
+                         "Geometry/Sector angle only");
+      declare_documented(prm,
+                         "Initial load steps",
+                         "",
+                         Patterns::List(Patterns::Integer(1), 0),
+                         "Values of Load stepping/Initial steps to compare in "
+                         "the study (e.g. 1, 10, 100); empty: that value only");
       prm.leave_subsection();
     }
 
@@ -640,6 +655,20 @@ namespace rollnip
       elements.clear();
       for (const auto &v : Utilities::split_string_list(prm.get("Elements")))
         elements.push_back(v == "Q2-P1" ? Element::q2_p1 : Element::q1_p0);
+      sector_angles.clear();
+      for (const auto &v :
+           Utilities::split_string_list(prm.get("Sector angles")))
+        {
+          const double a = Utilities::string_to_double(v);
+          AssertThrow(a > 0 && a <= 180,
+                      ExcMessage("Study/Sector angles: " + v +
+                                 " is not in (0, 180] deg"));
+          sector_angles.push_back(a * degree);
+        }
+      initial_steps.clear();
+      for (const auto &v :
+           Utilities::split_string_list(prm.get("Initial load steps")))
+        initial_steps.push_back(Utilities::string_to_int(v));
       prm.leave_subsection();
     }
 
@@ -698,6 +727,10 @@ namespace rollnip
     {
       const double R1 = geometry.inner_radius;
       const double R0 = geometry.outer_radius;
+      AssertThrow(study.sector_angles.empty() ||
+                    mesh.source == MeshSource::builtin,
+                  ExcMessage("Study/Sector angles needs Mesh/Source = builtin "
+                             "(a gmsh mesh has its own sector)"));
       AssertThrow(R1 > 0,
                   ExcMessage("Geometry/Inner radius must be positive, got " +
                              std::to_string(R1) + " mm"));

@@ -51,6 +51,9 @@ namespace rollnip
       /// cells thinner towards the loaded surface.
       double       radial_grading;
       unsigned int global_refinements;
+      /// Set by drivers, not the .prm: explicit coarse cell widths in theta
+      /// [rad] (summing to the sector angle) instead of cells and grading.
+      std::vector<double> circumferential_steps;
 
       static void
       declare(ParameterHandler &prm);
@@ -222,6 +225,10 @@ namespace rollnip
       std::vector<unsigned int> levels;
       /// Elements to compare; empty: Discretization/Element only.
       std::vector<Element> elements;
+      /// Sector angles [rad] to compare; empty: Geometry/Sector angle only.
+      std::vector<double> sector_angles;
+      /// Load stepping/Initial steps to compare; empty: that value only.
+      std::vector<unsigned int> initial_steps;
 
       static void
       declare(ParameterHandler &prm);

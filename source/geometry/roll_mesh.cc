@@ -27,6 +27,30 @@ namespace rollnip
     return steps;
   }
 
+  std::vector<double>
+  extend_steps(const std::vector<double> &steps, const double length)
+  {
+    Assert(!steps.empty() && length > 0, ExcInternalError());
+    const double growth =
+      steps.size() > 1 ? steps[steps.size() - 1] / steps[steps.size() - 2] : 1.;
+    std::vector<double> result;
+    double              sum = 0, next = steps[0];
+    for (std::size_t k = 0;; ++k)
+      {
+        next = k < steps.size() ? steps[k] : next * growth;
+        if (sum + next > length * (1 + 1e-12))
+          break;
+        result.push_back(next);
+        sum += next;
+      }
+    const double rest = length - sum;
+    if (rest > 0.5 * next || result.empty())
+      result.push_back(rest);
+    else
+      result.back() += rest;
+    return result;
+  }
+
   namespace
   {
     /// The sector annulus: a graded rectangle in (r, theta), mapped to
@@ -43,9 +67,11 @@ namespace rollnip
         graded_steps(m.radial_cells,
                      g.outer_radius - g.inner_radius,
                      m.radial_grading),
-        graded_steps(m.circumferential_cells,
-                     g.sector_angle,
-                     m.circumferential_grading)};
+        m.circumferential_steps.empty()
+          ? graded_steps(m.circumferential_cells,
+                         g.sector_angle,
+                         m.circumferential_grading)
+          : m.circumferential_steps};
       GridGenerator::subdivided_hyper_rectangle(coarse,
                                                 steps,
                                                 Point<dim>(g.inner_radius, 0.),

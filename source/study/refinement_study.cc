@@ -2,7 +2,9 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <rollnip/boundary_ids.h>
 #include <rollnip/contact/nip_study.h>
+#include <rollnip/geometry/roll_mesh.h>
 #include <rollnip/output/atomic_file.h>
 #include <rollnip/problem.h>
 #include <rollnip/study/refinement_study.h>
@@ -63,14 +65,24 @@ namespace rollnip
       {"bond s_rr [MPa]", "bond_sigma_rr_min_MPa", "e_srr"},
       {"bond s_rt [MPa]", "bond_sigma_rtheta_max_MPa", "e_srt"}};
 
+    /// One sequence of levels: an element, a sector angle, a step count.
+    struct Variant
+    {
+      Parameters::Element element;
+      double              sector_angle;  ///< [rad]
+      unsigned int        initial_steps; ///< Load stepping/Initial steps
+      std::string         label;         ///< for tables
+      std::string         tag;           ///< for CSV and directories
+    };
+
     struct Run
     {
-      Parameters::Element      element;
-      unsigned int             level  = 0;
-      types::global_cell_index cells  = 0;
-      types::global_dof_index  dofs   = 0;
-      double                   wall   = 0; ///< [s]
-      double                   memory = 0; ///< peak resident set [MB]
+      unsigned int             variant = 0;
+      unsigned int             level   = 0;
+      types::global_cell_index cells   = 0;
+      types::global_dof_index  dofs    = 0;
+      double                   wall    = 0; ///< [s]
+      double                   memory  = 0; ///< peak resident set [MB]
       std::vector<double>      values;
     };
 
@@ -150,6 +162,46 @@ namespace rollnip
     }
   } // namespace
 
+  namespace
+  {
+    /// Elements x sector angles x initial steps, in the order listed.
+    std::vector<Variant>
+    make_variants(const Parameters::AllParameters &parameters)
+    {
+      const auto &study    = parameters.study;
+      auto        elements = study.elements;
+      if (elements.empty())
+        elements = {parameters.discretization.element};
+      auto angles = study.sector_angles;
+      if (angles.empty())
+        angles = {parameters.geometry.sector_angle};
+      auto steps = study.initial_steps;
+      if (steps.empty())
+        steps = {parameters.load_stepping.n_initial_steps};
+      std::vector<Variant> variants;
+      for (const auto e : elements)
+        for (const double a : angles)
+          for (const unsigned int n : steps)
+            {
+              Variant            v{e, a, n, element_name(e), element_name(e)};
+              std::ostringstream deg;
+              deg << std::setprecision(6) << a / (numbers::PI / 180.);
+              if (!study.sector_angles.empty())
+                {
+                  v.label += ", sector " + deg.str() + " deg";
+                  v.tag += "-sector-" + deg.str();
+                }
+              if (!study.initial_steps.empty())
+                {
+                  v.label += ", " + std::to_string(n) + " initial load steps";
+                  v.tag += "-steps-" + std::to_string(n);
+                }
+              variants.push_back(v);
+            }
+      return variants;
+    }
+  } // namespace
+
   int
   run_refinement_study(const Parameters::AllParameters &parameters)
   {
@@ -158,27 +210,41 @@ namespace rollnip
     const bool         contact =
       parameters.contact.mode != Parameters::ContactMode::none;
     const auto &quantities = contact ? contact_quantities : pressure_quantities;
-    std::vector<Parameters::Element> elements = parameters.study.elements;
-    if (elements.empty())
-      elements = {parameters.discretization.element};
-    const std::string &top = parameters.output.directory;
+    const std::vector<Variant> variants = make_variants(parameters);
+    const std::string         &top      = parameters.output.directory;
 
     std::vector<Run> runs;
     std::string      failure;
-    for (const auto element : elements)
+    for (unsigned int vi = 0; vi < variants.size(); ++vi)
       {
+        const Variant &variant = variants[vi];
         for (const unsigned int level : parameters.study.levels)
           {
-            Parameters::AllParameters p = parameters;
-            p.mesh.global_refinements   = level;
-            p.discretization.element    = element;
-            p.output.print_timing       = false;
-            p.contact.compare_linear    = false;
-            p.output.directory = top + "/study/" + element_name(element) +
-                                 "-level-" + std::to_string(level);
+            Parameters::AllParameters p     = parameters;
+            p.mesh.global_refinements       = level;
+            p.discretization.element        = variant.element;
+            p.load_stepping.n_initial_steps = variant.initial_steps;
+            if (variant.sector_angle != parameters.geometry.sector_angle)
+              {
+                // The same coarse cells near the nip on every sector:
+                // cells are added or dropped at the far end.
+                p.geometry.sector_angle      = variant.sector_angle;
+                p.mesh.circumferential_steps = extend_steps(
+                  graded_steps(parameters.mesh.circumferential_cells,
+                               parameters.geometry.sector_angle,
+                               parameters.mesh.circumferential_grading),
+                  variant.sector_angle);
+                if (variant.sector_angle > numbers::PI - 1e-9)
+                  p.boundary_conditions.condition[BoundaryIds::far_edge] =
+                    Parameters::BoundaryCondition::symmetry;
+              }
+            p.output.print_timing    = false;
+            p.contact.compare_linear = false;
+            p.output.directory =
+              top + "/study/" + variant.tag + "-level-" + std::to_string(level);
             if (contact)
               p.contact.values.resize(1);
-            pcout << "Study: " << element_name(element) << ", level " << level
+            pcout << "Study: " << variant.label << ", level " << level
                   << std::endl;
             Run         run;
             const auto  start = std::chrono::steady_clock::now();
@@ -202,12 +268,11 @@ namespace rollnip
             Utilities::System::get_memory_stats(memory);
             run.memory =
               Utilities::MPI::sum(memory.VmHWM / 1024., MPI_COMM_WORLD);
-            run.element = element;
+            run.variant = vi;
             run.level   = level;
             if (code != 0)
               {
-                failure = element_name(element) + " at level " +
-                          std::to_string(level) +
+                failure = variant.label + " at level " + std::to_string(level) +
                           (thrown.empty() ? " did not converge"
                                           : " failed: " + thrown) +
                           " (see " + p.output.directory + ")";
@@ -222,18 +287,24 @@ namespace rollnip
     // One table per element; errors against the extrapolated value of
     // that element's sequence.
     std::ostringstream text, csv;
-    csv << "element,level,cells,dofs";
+    csv << "variant,element,sector_deg,initial_steps,level,cells,dofs";
     for (const auto &q : quantities)
       csv << ',' << q.key;
     for (const auto &q : quantities)
       csv << ",error_" << q.key;
     csv << ",wall_s,process_peak_memory_MB\n" << std::setprecision(10);
-    for (const auto element : elements)
+    std::vector<std::vector<double>> limits(variants.size());
+    std::vector<double>              variant_wall(variants.size(), 0.);
+    for (unsigned int vi = 0; vi < variants.size(); ++vi)
       {
+        const Variant   &variant = variants[vi];
         std::vector<Run> mine;
         for (const auto &r : runs)
-          if (r.element == element)
-            mine.push_back(r);
+          if (r.variant == vi)
+            {
+              mine.push_back(r);
+              variant_wall[vi] += r.wall;
+            }
         if (mine.empty())
           continue;
         std::vector<double>        exact(quantities.size());
@@ -246,13 +317,16 @@ namespace rollnip
             ex[q]    = extrapolate(v);
             exact[q] = ex[q].value;
           }
+        limits[vi] = exact;
         ConvergenceTable table;
         for (const auto &r : mine)
           {
             table.add_value("level", r.level);
             table.add_value("cells", static_cast<unsigned int>(r.cells));
             table.add_value("DoFs", static_cast<unsigned int>(r.dofs));
-            csv << element_name(element) << ',' << r.level << ',' << r.cells
+            csv << variant.tag << ',' << element_name(variant.element) << ','
+                << variant.sector_angle / (numbers::PI / 180.) << ','
+                << variant.initial_steps << ',' << r.level << ',' << r.cells
                 << ',' << r.dofs;
             for (unsigned int q = 0; q < quantities.size(); ++q)
               {
@@ -285,7 +359,7 @@ namespace rollnip
         table.set_precision("wall [s]", 3);
         table.set_precision("process peak [MB]", 1);
 
-        text << "Refinement study, " << element_name(element)
+        text << "Refinement study, " << variant.label
              << " (e = relative error against the Richardson-extrapolated "
                 "value; rates are log2 of the error reduction per level; "
                 "process peak = the largest resident memory of the process "
@@ -312,6 +386,41 @@ namespace rollnip
                   "nip half-width b: "
                << cheapest(mine, exact, 2, 1e-2) << " / "
                << cheapest(mine, exact, 2, 1e-3) << '\n';
+        text << '\n';
+      }
+    // The price of each simplification: every variant's limit against
+    // that of the most faithful variant of its element (largest sector,
+    // most initial steps).
+    if (variants.size() > 1)
+      {
+        text << "Variants compared (limits as above; difference against "
+                "the most faithful variant of the same element: largest "
+                "sector, most initial load steps):\n";
+        for (unsigned int vi = 0; vi < variants.size(); ++vi)
+          {
+            if (limits[vi].empty())
+              continue;
+            unsigned int ref = vi;
+            for (unsigned int k = 0; k < variants.size(); ++k)
+              if (!limits[k].empty() &&
+                  variants[k].element == variants[vi].element &&
+                  (variants[k].sector_angle > variants[ref].sector_angle ||
+                   (variants[k].sector_angle == variants[ref].sector_angle &&
+                    variants[k].initial_steps > variants[ref].initial_steps)))
+                ref = k;
+            text << "  " << std::setw(40) << std::left << variants[vi].label
+                 << std::right;
+            for (const unsigned int q : {0u, 1u})
+              {
+                const double d = limits[vi][q] / limits[ref][q] - 1;
+                text << "  " << quantities[q].label << " "
+                     << std::setprecision(8) << limits[vi][q] << " ("
+                     << std::showpos << std::setprecision(3) << 100 * d
+                     << std::noshowpos << " %)";
+              }
+            text << "  wall " << std::setprecision(3) << variant_wall[vi]
+                 << " s (all levels)\n";
+          }
         text << '\n';
       }
     if (!failure.empty())

@@ -26,6 +26,14 @@ namespace rollnip
   /// geometrically by the total ratio (last / first) given.
   std::vector<double>
   graded_steps(const unsigned int n, const double length, const double ratio);
+
+  /// The cells of @p steps re-cut to the total @p length so that the cells
+  /// near the start (the nip) stay exactly as they are: cells are dropped
+  /// from, or added at the growth rate of the last two to, the far end, and
+  /// the last cell takes up the remainder (a remainder under half a cell
+  /// widens the one before instead).
+  std::vector<double>
+  extend_steps(const std::vector<double> &steps, const double length);
 } // namespace rollnip
 
 #endif
