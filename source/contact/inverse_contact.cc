@@ -226,15 +226,18 @@ namespace rollnip
                 AssertThrow(applied_pressure,
                             ExcMessage("the initial contact pressure cannot "
                                        "be applied (Newton failed)"));
+                // The run carried the fraction status.load_fraction of
+                // the update: retry just below it (at most half).
+                const double factor = std::min(0.5, 0.8 * status.load_fraction);
                 for (unsigned int k = 0; k < m; ++k)
-                  a[k] = f_from[k] + 0.5 * (a[k] - f_from[k]);
+                  a[k] = f_from[k] + factor * (a[k] - f_from[k]);
               }
           }
         if (!solved)
           {
             result.message = "the cover cannot carry the pressure update of "
                              "contact iteration " +
-                             std::to_string(it) + ", even halved 3 times (" +
+                             std::to_string(it) + ", even reduced 3 times (" +
                              why + ")";
             break;
           }
@@ -318,7 +321,11 @@ namespace rollnip
         // is taken back and halved, up to 4 times in a row.
         if (it > 1 && (!(u0 > 0) || residual > accepted_residual))
           {
-            if (halvings < 4)
+            // A residual that no longer moves will not move for a smaller
+            // update either: refuse at once.
+            const bool stalled =
+              std::abs(residual - accepted_residual) < 1e-3 * accepted_residual;
+            if (halvings < 4 && !stalled)
               {
                 ++halvings;
                 pcout << "      (the conformity residual grew from "
@@ -336,9 +343,10 @@ namespace rollnip
             msg << std::scientific << std::setprecision(3)
                 << "the contact iteration diverges at theta0 = " << std::fixed
                 << theta0 * 180 / numbers::PI << " deg (conformity residual "
-                << std::scientific << accepted_residual << " grows to "
-                << residual
-                << " after 4 halvings of the update, u0 = " << std::fixed << u0
+                << std::scientific << accepted_residual
+                << (stalled ? " stalls at " : " grows to ") << residual
+                << " after " << halvings
+                << " halving(s) of the update, u0 = " << std::fixed << u0
                 << " mm): the nip is too large for this cover, or the mesh "
                    "too coarse near it";
             result.message = msg.str();

@@ -109,6 +109,10 @@ namespace rollnip
       pcout << "      iter  |R_u|/|F|     sum|J-1|/A    |du|/|u|    step"
             << std::endl;
 
+    // Iterations in a row whose line search found no decrease: two mean
+    // the iteration is stuck (beyond a limit load, say), and the step is
+    // given up at once rather than after the full iteration budget.
+    unsigned int stalled = 0;
     for (unsigned int it = 1; it <= nl.max_iterations; ++it)
       {
         if ((check_J && !(min_J > 0)) || !std::isfinite(e_R))
@@ -119,7 +123,8 @@ namespace rollnip
         // Backtracking on the merit sqrt(e_R^2 + e_J^2).
         const double                  old_merit = merit(e_R, e_J);
         TrilinosWrappers::MPI::Vector base(solution);
-        double                        alpha = 1;
+        double                        alpha     = 1;
+        bool                          decreased = false;
         for (unsigned int ls = 0;; ++ls)
           {
             solution = base;
@@ -129,6 +134,7 @@ namespace rollnip
             measure(e_R, e_J);
             const bool ok = (!check_J || min_J > 0) && std::isfinite(e_R) &&
                             merit(e_R, e_J) < (1. - 1e-4 * alpha) * old_merit;
+            decreased = ok;
             if (ok || !nl.line_search || ls >= nl.max_line_search_steps)
               break;
             alpha *= 0.5;
@@ -146,6 +152,7 @@ namespace rollnip
 
         if ((check_J && !(min_J > 0)) || !std::isfinite(e_R))
           break;
+        stalled = decreased ? 0 : stalled + 1;
         const bool converged =
           e_R < nl.residual_tolerance && e_J < nl.constraint_tolerance &&
           (e_u < nl.increment_tolerance || e_R < 1e-3 * nl.residual_tolerance);
@@ -160,6 +167,8 @@ namespace rollnip
                                     wall_clock.wall_time()});
             return true;
           }
+        if (nl.line_search && stalled >= 2)
+          break;
         // The tangent at the accepted point, for the next iteration.
         min_J = assemble(load_fraction, true);
       }
