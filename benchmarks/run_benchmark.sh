@@ -4,7 +4,8 @@
 #
 # Usage: bash benchmarks/run_benchmark.sh [N]     (N timed runs per level, default 3)
 #
-# Uses build/rollnip of this repository (build it with: bash scripts/setup.sh).
+# Uses build/rollnip of this repository (build it with: bash scripts/setup.sh),
+# or the executable named by $ROLLNIP_BIN (to time another build).
 # Each run reads a temporary copy of the .prm with 'Mesh/Global refinements'
 # changed and VTU output switched off (Output/Write VTU = false), writing into a
 # temporary directory. One extra run per level with VTU on (every step)
@@ -35,11 +36,11 @@ case "$n_repeats" in
 esac
 
 base_prm="parameters/parabolic_pressure.prm"
-rollnip="build/rollnip"
+rollnip="${ROLLNIP_BIN:-build/rollnip}"
 levels=(0 1 2 3)
 
 if [ ! -x "$rollnip" ]; then
-  echo "run_benchmark: error: $repo_root/$rollnip not found; build it with: bash scripts/setup.sh" >&2
+  echo "run_benchmark: error: $rollnip not found; build it with: bash scripts/setup.sh" >&2
   exit 1
 fi
 
