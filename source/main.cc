@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <rollnip/contact/nip_study.h>
+#include <rollnip/geometry/adaptive_grading.h>
 #include <rollnip/parameters.h>
 #include <rollnip/problem.h>
 #include <rollnip/run_errors.h>
@@ -96,6 +97,8 @@ main(int argc, char **argv)
     parameters.read(file);
     if (!parameters.study.levels.empty() && !validate_only)
       return run_refinement_study(parameters);
+    if (!validate_only)
+      parameters = adapt_grading(parameters);
     if (parameters.contact.mode != Parameters::ContactMode::none &&
         !validate_only)
       return run_nip_study(parameters);

@@ -145,6 +145,16 @@ namespace rollnip
                          "1",
                          Patterns::Integer(0, 12),
                          "Uniform refinements of the coarse mesh");
+      declare_documented(
+        prm,
+        "Adaptive grading passes",
+        "0",
+        Patterns::Integer(0, 10),
+        "Before the run, solve the scene this many times and after each "
+        "solve re-cut the coarse circumferential cells (same number) so that "
+        "they equidistribute the Kelly error indicator: r-adaptivity without "
+        "hanging nodes (builtin mesh only; the first Contact/Values for a "
+        "contact scene). 0: the graded mesh as given");
       prm.leave_subsection();
     }
 
@@ -160,6 +170,7 @@ namespace rollnip
       circumferential_grading = prm.get_double("Circumferential grading");
       radial_grading          = prm.get_double("Radial grading");
       global_refinements      = prm.get_integer("Global refinements");
+      adaptive_passes         = prm.get_integer("Adaptive grading passes");
       prm.leave_subsection();
     }
 
@@ -626,10 +637,11 @@ namespace rollnip
                          "",
                          Patterns::List(Patterns::Double(), 0),
                          "Sector angles [deg] to compare in the study (e.g. "
-                         "30, 45, 90, 180); Mesh/Circumferential cells is "
-                         "scaled with the angle, and 180 makes the far edge a "
-                         "symmetry edge (the untruncated half roll); empty: "
-                         "Geometry/Sector angle only");
+                         "30, 45, 90, 180); the coarse cells near the nip "
+                         "stay as they are and cells are added or dropped at "
+                         "the far end; 180 makes the far edge a symmetry edge "
+                         "(the untruncated half roll); empty: Geometry/Sector "
+                         "angle only");
       declare_documented(prm,
                          "Initial load steps",
                          "",
@@ -727,6 +739,10 @@ namespace rollnip
     {
       const double R1 = geometry.inner_radius;
       const double R0 = geometry.outer_radius;
+      AssertThrow(mesh.adaptive_passes == 0 ||
+                    mesh.source == MeshSource::builtin,
+                  ExcMessage("Mesh/Adaptive grading passes needs Mesh/Source "
+                             "= builtin (it re-cuts the builtin mesh)"));
       AssertThrow(study.sector_angles.empty() ||
                     mesh.source == MeshSource::builtin,
                   ExcMessage("Study/Sector angles needs Mesh/Source = builtin "

@@ -51,6 +51,9 @@ namespace rollnip
       /// cells thinner towards the loaded surface.
       double       radial_grading;
       unsigned int global_refinements;
+      /// Solves before the real run whose error indicator re-cuts the
+      /// coarse circumferential cells (r-adaptivity; 0: none).
+      unsigned int adaptive_passes;
       /// Set by drivers, not the .prm: explicit coarse cell widths in theta
       /// [rad] (summing to the sector angle) instead of cells and grading.
       std::vector<double> circumferential_steps;

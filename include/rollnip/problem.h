@@ -183,6 +183,12 @@ namespace rollnip
     {
       return newton_records;
     }
+    /// GMRES iterations of all solves so far (Method = gmres-amg).
+    unsigned int
+    gmres_iterations() const
+    {
+      return iterative_solver.n_iterations;
+    }
     const std::vector<StepRecord> &
     step_log() const
     {

@@ -228,7 +228,10 @@ namespace rollnip
                                        "be applied (Newton failed)"));
                 // The run carried the fraction status.load_fraction of
                 // the update: retry just below it (at most half).
-                const double factor = std::min(0.5, 0.8 * status.load_fraction);
+                const double factor =
+                  status.load_fraction > 0
+                    ? std::min(0.5, std::max(0.1, 0.8 * status.load_fraction))
+                    : 0.5;
                 for (unsigned int k = 0; k < m; ++k)
                   a[k] = f_from[k] + factor * (a[k] - f_from[k]);
               }
@@ -324,6 +327,7 @@ namespace rollnip
             // A residual that no longer moves will not move for a smaller
             // update either: refuse at once.
             const bool stalled =
+              halvings > 0 &&
               std::abs(residual - accepted_residual) < 1e-3 * accepted_residual;
             if (halvings < 4 && !stalled)
               {

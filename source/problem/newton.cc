@@ -118,7 +118,19 @@ namespace rollnip
         if ((check_J && !(min_J > 0)) || !std::isfinite(e_R))
           break;
         newton_update = 0;
-        solve_linear_system(newton_update);
+        try
+          {
+            solve_linear_system(newton_update);
+          }
+        catch (const std::exception &e)
+          {
+            // Only the iterative solver fails softly (too many iterations):
+            // the step is cut back like a failed Newton iteration.
+            if (!use_iterative_solver())
+              throw;
+            pcout << "      (" << e.what() << ")" << std::endl;
+            break;
+          }
 
         // Backtracking on the merit sqrt(e_R^2 + e_J^2).
         const double                  old_merit = merit(e_R, e_J);

@@ -4,6 +4,7 @@
 
 #include <rollnip/boundary_ids.h>
 #include <rollnip/contact/nip_study.h>
+#include <rollnip/geometry/adaptive_grading.h>
 #include <rollnip/geometry/roll_mesh.h>
 #include <rollnip/output/atomic_file.h>
 #include <rollnip/problem.h>
@@ -94,8 +95,9 @@ namespace rollnip
 
     /// One run of the scene; returns the exit code.
     int
-    run_scene(const Parameters::AllParameters &p, Run &run)
+    run_scene(const Parameters::AllParameters &given, Run &run)
     {
+      const Parameters::AllParameters p = adapt_grading(given);
       if (p.contact.mode != Parameters::ContactMode::none)
         {
           std::vector<NipRow> rows;
@@ -234,9 +236,14 @@ namespace rollnip
                                parameters.geometry.sector_angle,
                                parameters.mesh.circumferential_grading),
                   variant.sector_angle);
+                auto &far =
+                  p.boundary_conditions.condition[BoundaryIds::far_edge];
                 if (variant.sector_angle > numbers::PI - 1e-9)
-                  p.boundary_conditions.condition[BoundaryIds::far_edge] =
-                    Parameters::BoundaryCondition::symmetry;
+                  far = Parameters::BoundaryCondition::symmetry;
+                else if (parameters.geometry.sector_angle >
+                           numbers::PI - 1e-9 &&
+                         far == Parameters::BoundaryCondition::symmetry)
+                  far = Parameters::BoundaryCondition::free; // truncated
               }
             p.output.print_timing    = false;
             p.contact.compare_linear = false;

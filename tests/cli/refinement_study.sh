@@ -24,7 +24,9 @@
 #     initial load steps does not change the converged state (hyperelastic,
 #     path independent: P agrees to 1e-6); the 90 deg sector agrees with the
 #     half roll to 0.1 % in P (tests/unit/sector_truncation.cc measured
-#     0.01 %), and the comparison block of study.txt lists all four.
+#     0.01 %); the half roll has more cells and 1 initial step fewer load
+#     steps than 10 (the settings were applied); and the comparison block of
+#     study.txt lists all four.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
@@ -114,6 +116,16 @@ for s in (90.0, 180.0):
 for l in (0, 1):
     d = abs(P[(90.0, 10, l)] / P[(180.0, 10, l)] - 1)
     check(d < 1e-3, f"level {l}: 90 deg sector within {100 * d:.3f} % of the half roll (< 0.1 %)")
+cells = {(float(r["sector_deg"]), int(r["initial_steps"]), int(r["level"])): int(r["cells"]) for r in rows}
+for l in (0, 1):
+    check(cells[(180.0, 10, l)] > cells[(90.0, 10, l)],
+          f"level {l}: the half roll has more cells ({cells[(180.0, 10, l)]}) than the 90 deg sector ({cells[(90.0, 10, l)]})")
+def load_steps(tag):
+    for line in open(f"out_variants/study/{tag}/summary.txt"):
+        if line.startswith("load_steps ="):
+            return int(line.split("=")[1])
+n1, n10 = load_steps("Q1-P0-sector-90-steps-1-level-1"), load_steps("Q1-P0-sector-90-steps-10-level-1")
+check(n1 < n10, f"1 initial step took fewer load steps ({n1}) than 10 ({n10}): the setting was applied")
 block = text.split("Variants compared")[-1]
 check(all(f"sector {s} deg, {n} initial load steps" in block for s in (90, 180) for n in (1, 10)),
       "the comparison block lists the four variants")

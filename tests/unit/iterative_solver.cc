@@ -15,7 +15,7 @@ namespace
   struct Result
   {
     double       P, u0;
-    unsigned int newton;
+    unsigned int newton, gmres;
   };
 
   Result
@@ -35,7 +35,8 @@ namespace
     AssertThrow(problem.run().converged, ExcMessage("scene did not converge"));
     const Result r{-problem.load_resultant(1.)[0],
                    -problem.radial_displacement_on_line_of_centres(),
-                   static_cast<unsigned int>(problem.newton_log().size())};
+                   static_cast<unsigned int>(problem.newton_log().size()),
+                   problem.gmres_iterations()};
     std::cout << "  " << element << ", " << method << ": resultant "
               << std::setprecision(10) << r.P << " N/mm, u0 = " << r.u0
               << " mm, " << r.newton << " Newton iterations" << std::endl;
@@ -58,6 +59,10 @@ main(int argc, char **argv)
                     element + ": gmres-amg and direct agree: |dP|/P = " +
                       testing::num(dP) + ", |du0|/u0 = " + testing::num(du) +
                       " < 1e-7");
+      checker.check(iterative.gmres > 0 && direct.gmres == 0,
+                    element + ": GMRES ran (" +
+                      std::to_string(iterative.gmres) +
+                      " iterations) and the direct run used none");
       checker.check(iterative.newton == direct.newton,
                     element + ": same Newton iterations (" +
                       std::to_string(iterative.newton) + ", " +
