@@ -398,7 +398,8 @@ namespace rollnip
     // The price of each simplification: every variant's limit against
     // that of the most faithful variant of its element (largest sector,
     // most initial steps).
-    if (variants.size() > 1)
+    if (!parameters.study.sector_angles.empty() ||
+        !parameters.study.initial_steps.empty())
       {
         text << "Variants compared (limits as above; difference against "
                 "the most faithful variant of the same element: largest "
