@@ -99,11 +99,7 @@ namespace rollnip
     ConditionalOStream pcout(std::cout,
                              Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) ==
                                0);
-    if (p.mesh.circumferential_steps.empty())
-      p.mesh.circumferential_steps =
-        graded_steps(p.mesh.circumferential_cells,
-                     p.geometry.sector_angle,
-                     p.mesh.circumferential_grading);
+    p.mesh.circumferential_steps    = coarse_circumferential_steps(p);
     Parameters::AllParameters quiet = p;
     quiet.output.write_vtu          = false;
     quiet.output.write_csv          = false;

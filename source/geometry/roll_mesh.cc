@@ -28,6 +28,17 @@ namespace rollnip
   }
 
   std::vector<double>
+  coarse_circumferential_steps(const Parameters::AllParameters &parameters)
+  {
+    const auto &m = parameters.mesh;
+    if (!m.circumferential_steps.empty())
+      return m.circumferential_steps;
+    return graded_steps(m.circumferential_cells,
+                        parameters.geometry.sector_angle,
+                        m.circumferential_grading);
+  }
+
+  std::vector<double>
   extend_steps(const std::vector<double> &steps, const double length)
   {
     Assert(!steps.empty() && length > 0, ExcInternalError());
@@ -67,11 +78,7 @@ namespace rollnip
         graded_steps(m.radial_cells,
                      g.outer_radius - g.inner_radius,
                      m.radial_grading),
-        m.circumferential_steps.empty()
-          ? graded_steps(m.circumferential_cells,
-                         g.sector_angle,
-                         m.circumferential_grading)
-          : m.circumferential_steps};
+        coarse_circumferential_steps(parameters)};
       GridGenerator::subdivided_hyper_rectangle(coarse,
                                                 steps,
                                                 Point<dim>(g.inner_radius, 0.),

@@ -168,7 +168,8 @@ namespace rollnip
             {
               copy.cell_rhs(i) +=
                 (scalar_product(P, grad_phi[i]) + psi[i] * g) * JxW;
-              copy.pressure_mass(i) += psi[i] * psi[i] * JxW;
+              if (with_matrix && with_preconditioner)
+                copy.pressure_mass(i) += psi[i] * psi[i] * JxW;
               if (!with_matrix)
                 continue;
               const double gi = scalar_product(dP_dq, grad_phi[i]);

@@ -42,7 +42,6 @@ namespace rollnip
         iterative_solver.initialize(
           system_matrix,
           preconditioner_matrix,
-          pressure_dofs,
           constant_modes,
           parameters.discretization.displacement_degree() > 1);
         return;

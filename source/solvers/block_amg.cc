@@ -4,7 +4,6 @@
 
 #include <rollnip/solvers/block_amg.h>
 
-#include <cstdlib>
 #include <sstream>
 
 namespace rollnip
@@ -28,12 +27,10 @@ namespace rollnip
   BlockAMGSolver::initialize(
     const TrilinosWrappers::SparseMatrix &K,
     const TrilinosWrappers::SparseMatrix &augmented,
-    const IndexSet                       &pressure_dofs,
     const std::vector<std::vector<bool>> &constant_modes,
     const bool                            higher_order)
   {
-    matrix   = &K;
-    pressure = pressure_dofs;
+    matrix = &K;
 
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic              = true;
@@ -51,14 +48,16 @@ namespace rollnip
                         const TrilinosWrappers::MPI::Vector &r) const
   {
     // z_u = A^-1 r_u (AMG on [A 0; 0 M_p/G] applied to [r_u; 0]).
+    auto set_pressure_to_zero = [this](TrilinosWrappers::MPI::Vector &v) {
+      for (const auto &dofs : block_dofs)
+        for (const auto i : dofs)
+          v[i] = 0;
+      v.compress(VectorOperation::insert);
+    };
     tmp = r;
-    for (const auto i : pressure)
-      tmp[i] = 0;
-    tmp.compress(VectorOperation::insert);
+    set_pressure_to_zero(tmp);
     amg.vmult(z, tmp);
-    for (const auto i : pressure)
-      z[i] = 0;
-    z.compress(VectorOperation::insert);
+    set_pressure_to_zero(z);
     // z_p = S^-1 (B z_u - r_p), with B z_u the pressure rows of K [z_u; 0].
     matrix->vmult(tmp, z);
     Vector<double> local, result;

@@ -230,12 +230,10 @@ namespace rollnip
               {
                 // The same coarse cells near the nip on every sector:
                 // cells are added or dropped at the far end.
-                p.geometry.sector_angle      = variant.sector_angle;
-                p.mesh.circumferential_steps = extend_steps(
-                  graded_steps(parameters.mesh.circumferential_cells,
-                               parameters.geometry.sector_angle,
-                               parameters.mesh.circumferential_grading),
-                  variant.sector_angle);
+                p.geometry.sector_angle = variant.sector_angle;
+                p.mesh.circumferential_steps =
+                  extend_steps(coarse_circumferential_steps(parameters),
+                               variant.sector_angle);
                 auto &far =
                   p.boundary_conditions.condition[BoundaryIds::far_edge];
                 if (variant.sector_angle > numbers::PI - 1e-9)

@@ -55,14 +55,21 @@ PRM
 [ -f out/study.csv ] && [ -f out/study.txt ] || fail "study.csv or study.txt missing"
 pass "study.csv and study.txt written"
 
-python3 - out/study.csv out/study.txt <<'PY' || fail "study table checks"
-import csv, re, sys
+# The Python checks below start with this: the study's rows and text, and
+# check(), which prints and stops at the first failure.
+cat >study_checks.py <<'PY'
+import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 text = open(sys.argv[2]).read()
 def check(ok, message):
     print(("ok:   " if ok else "FAIL: ") + message)
     if not ok:
         sys.exit(1)
+PY
+
+python3 - out/study.csv out/study.txt <<'PY' || fail "study table checks"
+import re
+exec(open("study_checks.py").read())
 check(len(rows) == 4, f"{len(rows)} rows for 4 levels")
 cells = [int(r["cells"]) for r in rows]
 check(all(b == 4 * a for a, b in zip(cells, cells[1:])), f"cells {cells} grow x4")
@@ -100,13 +107,7 @@ PRM
 "$rollnip" variants.prm >log_variants.txt 2>&1 ||
   { tail -20 log_variants.txt; fail "rollnip study with variants failed"; }
 python3 - out_variants/study.csv out_variants/study.txt <<'PY' || fail "study variant checks"
-import csv, sys
-rows = list(csv.DictReader(open(sys.argv[1])))
-text = open(sys.argv[2]).read()
-def check(ok, message):
-    print(("ok:   " if ok else "FAIL: ") + message)
-    if not ok:
-        sys.exit(1)
+exec(open("study_checks.py").read())
 check(len(rows) == 8, f"{len(rows)} rows for 2 sectors x 2 step counts x 2 levels")
 P = {(float(r["sector_deg"]), int(r["initial_steps"]), int(r["level"])): float(r["P_N_per_mm"]) for r in rows}
 for s in (90.0, 180.0):

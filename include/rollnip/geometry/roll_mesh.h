@@ -27,6 +27,12 @@ namespace rollnip
   std::vector<double>
   graded_steps(const unsigned int n, const double length, const double ratio);
 
+  /// The coarse cell widths in theta [rad] of the builtin mesh:
+  /// Mesh::circumferential_steps if a driver set them, else the graded
+  /// cells of Mesh/Circumferential cells and grading.
+  std::vector<double>
+  coarse_circumferential_steps(const Parameters::AllParameters &parameters);
+
   /// The cells of @p steps re-cut to the total @p length so that the cells
   /// near the start (the nip) stay exactly as they are: cells are dropped
   /// from, or added at the growth rate of the last two to, the far end, and

@@ -1,8 +1,6 @@
 #ifndef rollnip_solvers_block_amg_h
 #define rollnip_solvers_block_amg_h
 
-#include <deal.II/base/index_set.h>
-
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -42,12 +40,11 @@ namespace rollnip
                      std::vector<FullMatrix<double>> &&inverse_masses);
 
     /// Builds the AMG hierarchy of @p augmented; K is used by solve().
-    /// @p pressure_dofs: the locally owned pressure DoFs; @p constant_modes:
-    /// the displacement components' constant modes (DoFTools).
+    /// @p constant_modes: the displacement components' constant modes
+    /// (DoFTools). The pressure DoFs are those of set_schur_blocks().
     void
     initialize(const TrilinosWrappers::SparseMatrix &K,
                const TrilinosWrappers::SparseMatrix &augmented,
-               const IndexSet                       &pressure_dofs,
                const std::vector<std::vector<bool>> &constant_modes,
                const bool                            higher_order);
 
@@ -70,7 +67,6 @@ namespace rollnip
     const unsigned int                                max_iterations;
     const TrilinosWrappers::SparseMatrix             *matrix = nullptr;
     TrilinosWrappers::PreconditionAMG                 amg;
-    IndexSet                                          pressure;
     std::vector<std::vector<types::global_dof_index>> block_dofs;
     std::vector<FullMatrix<double>>                   block_inverses;
     mutable TrilinosWrappers::MPI::Vector             tmp;
