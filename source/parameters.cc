@@ -155,6 +155,33 @@ namespace rollnip
         "they equidistribute the Kelly error indicator: r-adaptivity without "
         "hanging nodes (builtin mesh only; the first Contact/Values for a "
         "contact scene). 0: the graded mesh as given");
+      declare_documented(
+        prm,
+        "Nip fitting",
+        "automatic",
+        Patterns::Selection("automatic|on|off"),
+        "on: the builtin mesh follows the nip, so that for every half nip "
+        "angle theta0 the contact edge is a surface vertex and P(theta0) is "
+        "smooth (only vertex positions change, doc/accuracy.md); off: a "
+        "fixed mesh graded by Circumferential grading, on which P(theta0) "
+        "steps wherever theta0 crosses a node; automatic: on for contact "
+        "scenes on the builtin mesh without adaptive grading");
+      declare_documented(prm,
+                         "Nip cells",
+                         "8",
+                         Patterns::Integer(1),
+                         "Nip-fitted mesh: coarse circumferential cells in "
+                         "the contact zone [0, theta0], out of Circumferential "
+                         "cells (at least 2 must remain beyond it)");
+      declare_documented(prm,
+                         "Nip grading",
+                         "2",
+                         Patterns::Double(1.),
+                         "Nip-fitted mesh: width of the central coarse nip "
+                         "cell over the one at the contact edge (where the "
+                         "pressure falls like a square root); 2 gives "
+                         "monotone convergence under refinement "
+                         "(doc/accuracy.md)");
       prm.leave_subsection();
     }
 
@@ -164,13 +191,19 @@ namespace rollnip
       prm.enter_subsection("Mesh");
       source =
         prm.get("Source") == "gmsh" ? MeshSource::gmsh : MeshSource::builtin;
-      mesh_file               = prm.get("Mesh file");
-      radial_cells            = prm.get_integer("Radial cells");
-      circumferential_cells   = prm.get_integer("Circumferential cells");
-      circumferential_grading = prm.get_double("Circumferential grading");
-      radial_grading          = prm.get_double("Radial grading");
-      global_refinements      = prm.get_integer("Global refinements");
-      adaptive_passes         = prm.get_integer("Adaptive grading passes");
+      mesh_file                 = prm.get("Mesh file");
+      radial_cells              = prm.get_integer("Radial cells");
+      circumferential_cells     = prm.get_integer("Circumferential cells");
+      circumferential_grading   = prm.get_double("Circumferential grading");
+      radial_grading            = prm.get_double("Radial grading");
+      global_refinements        = prm.get_integer("Global refinements");
+      adaptive_passes           = prm.get_integer("Adaptive grading passes");
+      const std::string fitting = prm.get("Nip fitting");
+      nip_fitting               = fitting == "on"    ? NipFitting::on
+                                  : fitting == "off" ? NipFitting::off
+                                                     : NipFitting::automatic;
+      nip_cells                 = prm.get_integer("Nip cells");
+      nip_grading               = prm.get_double("Nip grading");
       prm.leave_subsection();
     }
 
@@ -790,8 +823,50 @@ namespace rollnip
                                    "positive (and, for nip angles, below "
                                    "Geometry/Sector angle)"));
         }
+      if (mesh.nip_fitting == NipFitting::on)
+        {
+          AssertThrow(mesh.source == MeshSource::builtin,
+                      ExcMessage("Mesh/Nip fitting = on needs Mesh/Source = "
+                                 "builtin (a gmsh mesh cannot be re-fitted)"));
+          AssertThrow(contact.mode != ContactMode::none,
+                      ExcMessage("Mesh/Nip fitting = on needs a contact "
+                                 "scene (Contact/Mode): there is no nip "
+                                 "to fit otherwise"));
+          AssertThrow(mesh.adaptive_passes == 0,
+                      ExcMessage("Mesh/Nip fitting = on and Mesh/Adaptive "
+                                 "grading passes both move the cells: "
+                                 "choose one"));
+        }
+      if (nip_fitted_mesh())
+        {
+          AssertThrow(mesh.nip_cells + 2 <= mesh.circumferential_cells,
+                      ExcMessage(
+                        "Mesh/Nip cells (" + std::to_string(mesh.nip_cells) +
+                        ") must leave at least 2 of Mesh/Circumferential "
+                        "cells (" +
+                        std::to_string(mesh.circumferential_cells) +
+                        ") beyond the contact zone"));
+          if (contact.mode == ContactMode::nip_angle)
+            for (const double v : contact.values)
+              AssertThrow(
+                v <= 0.5 * geometry.sector_angle * (1 + 1e-12),
+                ExcMessage(
+                  "Contact/Values: the nip-fitted mesh takes "
+                  "theta0 up to half of Geometry/Sector angle (" +
+                  std::to_string(0.5 * geometry.sector_angle / degree) +
+                  " deg), got " + std::to_string(v / degree) + " deg"));
+        }
       AssertThrow(!output.directory.empty(),
                   ExcMessage("Output/Directory must not be empty"));
+    }
+
+    bool
+    AllParameters::nip_fitted_mesh() const
+    {
+      if (mesh.nip_fitting == NipFitting::automatic)
+        return contact.mode != ContactMode::none &&
+               mesh.source == MeshSource::builtin && mesh.adaptive_passes == 0;
+      return mesh.nip_fitting == NipFitting::on;
     }
   } // namespace Parameters
 } // namespace rollnip

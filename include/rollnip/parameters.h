@@ -38,6 +38,13 @@ namespace rollnip
       gmsh
     };
 
+    enum class NipFitting
+    {
+      automatic, ///< fitted for contact scenes on the builtin mesh
+      on,
+      off
+    };
+
     struct Mesh
     {
       MeshSource   source;
@@ -54,6 +61,12 @@ namespace rollnip
       /// Solves before the real run whose error indicator re-cuts the
       /// coarse circumferential cells (r-adaptivity; 0: none).
       unsigned int adaptive_passes;
+      /// Whether the builtin mesh follows the nip (nip_fitted_mesh.h).
+      NipFitting nip_fitting;
+      /// Coarse circumferential cells in [0, theta0] of the fitted mesh.
+      unsigned int nip_cells;
+      /// Width of the central over the edge nip cell (>= 1).
+      double nip_grading;
       /// Set by drivers, not the .prm: explicit coarse cell widths in theta
       /// [rad] (summing to the sector angle) instead of cells and grading.
       std::vector<double> circumferential_steps;
@@ -272,6 +285,12 @@ namespace rollnip
        */
       void
       validate() const;
+
+      /// Whether the mesh is the nip-fitted one: Mesh/Nip fitting = on, or
+      /// automatic for a contact scene on the builtin mesh without
+      /// adaptive grading.
+      bool
+      nip_fitted_mesh() const;
     };
 
     /// Human-readable name of a condition, as written in the .prm file.

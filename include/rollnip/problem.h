@@ -17,6 +17,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <rollnip/geometry/nip_fitted_mesh.h>
 #include <rollnip/global.h>
 #include <rollnip/material/mooney_rivlin.h>
 #include <rollnip/parameters.h>
@@ -82,6 +83,33 @@ namespace rollnip
     /// Mesh, DoFs, constraints, sparsity (setup.cc).
     void
     setup();
+
+    /// Whether the mesh follows the nip (Mesh/Nip fitting).
+    bool
+    has_nip_fitted_mesh() const
+    {
+      return static_cast<bool>(nip_mesh);
+    }
+
+    /// Moves the vertices of the nip-fitted mesh so that the contact edge
+    /// is the surface vertex at @p theta0 [rad]; the DoFs, the pattern and
+    /// the state vector stay (setup.cc).
+    void
+    fit_mesh_to_nip(const double theta0);
+
+    /// The largest theta0 [rad] fit_mesh_to_nip() takes.
+    double
+    max_nip_angle() const
+    {
+      return nip_mesh ? nip_mesh->max_nip_angle() : 0.;
+    }
+
+    /// The smallest corner Jacobian ratio and largest aspect ratio.
+    MeshQuality
+    cell_quality() const
+    {
+      return mesh_quality(triangulation);
+    }
 
     /// Ramps the load from 0 to 1 with adaptive steps; writes output for
     /// converged steps; never throws for a load it cannot reach but
@@ -252,6 +280,9 @@ namespace rollnip
     make_constraints();
     void
     set_up_schur_blocks();
+    /// The area of the mesh [mm^2] (for the constraint norm).
+    double
+    measure_area() const;
     bool
     use_iterative_solver() const
     {
@@ -293,6 +324,7 @@ namespace rollnip
     Timer                            wall_clock;
 
     parallel::distributed::Triangulation<dim> triangulation;
+    std::unique_ptr<NipFittedMesh>            nip_mesh; ///< or none
     const MooneyRivlin                        material;
     std::function<double(double, double)>     pressure;
 

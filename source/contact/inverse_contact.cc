@@ -123,9 +123,26 @@ namespace rollnip
     return u;
   }
 
+  double
+  InverseContact::max_nip_angle()
+  {
+    if (problem.has_nip_fitted_mesh())
+      return problem.max_nip_angle();
+    if (nodes.empty())
+      collect_surface_nodes();
+    // The edge row needs two free nodes beyond the zone.
+    return nodes.size() > 3 ? nodes[nodes.size() - 3].theta : 0.;
+  }
+
   ContactResult
   InverseContact::solve(const double theta0)
   {
+    // On the nip-fitted mesh the contact edge is moved onto a node.
+    if (problem.has_nip_fitted_mesh())
+      {
+        problem.fit_mesh_to_nip(theta0);
+        nodes.clear();
+      }
     if (nodes.empty())
       collect_surface_nodes();
     problem.set_step_log(false);
@@ -138,8 +155,10 @@ namespace rollnip
     // Knots: the nodes below theta0, then theta0 itself (f = 0 there).
     // Every knot but the first carries a zero-gap equation, and so does
     // theta0, so that every node of the zone is held on the indenter.
+    // A node within round-off of theta0 is the edge (always so on the
+    // nip-fitted mesh).
     unsigned int m = 0;
-    while (m < nodes.size() && nodes[m].theta < theta0)
+    while (m < nodes.size() && nodes[m].theta < theta0 * (1 - 1e-12))
       ++m;
     AssertThrow(m < nodes.size(),
                 ExcMessage("Contact: the contact zone reaches the end of the "
@@ -155,9 +174,10 @@ namespace rollnip
     knots.push_back(theta0);
 
     // Where theta0 falls between two nodes, for its interpolated position.
-    const unsigned int left = above - 1;
-    const double       weight =
-      (theta0 - nodes[left].theta) / (nodes[above].theta - nodes[left].theta);
+    const unsigned int left   = above - 1;
+    const double       weight = std::min(1.,
+                                   (theta0 - nodes[left].theta) /
+                                     (nodes[above].theta - nodes[left].theta));
 
     // Initial guess: a Hertz-like parabola with the peak pressure of a
     // rigid cylinder on an incompressible half-space, E* = 4 G.
@@ -194,7 +214,18 @@ namespace rollnip
     unsigned int halvings          = 0;
 
     pcout << "Contact iteration, theta0 = " << theta0 * 180 / numbers::PI
-          << " deg, " << m << " pressure parameters" << std::endl
+          << " deg, " << m << " pressure parameters";
+    if (problem.has_nip_fitted_mesh())
+      {
+        const MeshQuality  q = problem.cell_quality();
+        std::ostringstream s;
+        s << std::setprecision(3)
+          << " (nip-fitted mesh: smallest corner Jacobian ratio "
+          << q.min_jacobian_ratio << ", largest aspect ratio "
+          << q.max_aspect_ratio << ")";
+        pcout << s.str();
+      }
+    pcout << std::endl
           << " iter  conformity |gap|/u0   u0 [mm]      P [N/mm]   min f [MPa]"
           << std::endl;
     for (unsigned int it = 1; it <= parameters.contact.max_iterations; ++it)
@@ -223,9 +254,8 @@ namespace rollnip
             if (!solved)
               {
                 problem.set_solution(saved);
-                AssertThrow(applied_pressure,
-                            ExcMessage("the initial contact pressure cannot "
-                                       "be applied (Newton failed)"));
+                if (!applied_pressure)
+                  break; // nothing smaller to retry from
                 // The run carried the fraction status.load_fraction of
                 // the update: retry just below it (at most half).
                 const double factor =
@@ -238,10 +268,13 @@ namespace rollnip
           }
         if (!solved)
           {
-            result.message = "the cover cannot carry the pressure update of "
-                             "contact iteration " +
-                             std::to_string(it) + ", even reduced 3 times (" +
-                             why + ")";
+            result.message =
+              applied_pressure
+                ? "the cover cannot carry the pressure update of contact "
+                  "iteration " +
+                    std::to_string(it) + ", even reduced 3 times (" + why + ")"
+                : "the cover cannot carry the first pressure guess (" + why +
+                    ")";
             break;
           }
         applied_pressure = [knots, a](const double theta) {
@@ -280,8 +313,10 @@ namespace rollnip
                                "the outer arc"));
         const unsigned int B    = above + 1;
         const double       span = nodes[B].theta - nodes[above].theta;
-        const double c_A = std::pow((nodes[B].theta - theta0) / span, 1.5);
-        const double c_B = std::pow((nodes[above].theta - theta0) / span, 1.5);
+        const double       c_A =
+          std::pow(std::max(0., nodes[B].theta - theta0) / span, 1.5);
+        const double c_B =
+          std::pow(std::max(0., nodes[above].theta - theta0) / span, 1.5);
         const unsigned int  n_eq = m;
         std::vector<double> g(n_eq);
         for (unsigned int j = 1; j < m; ++j)
@@ -431,6 +466,27 @@ namespace rollnip
                            "zone by " +
                          std::to_string(result.penetration) +
                          " u0: theta0 is too small for this load";
+      }
+    if (result.converged)
+      {
+        converged_state    = problem.current_solution();
+        converged_pressure = applied_pressure;
+        converged_theta0   = theta0;
+      }
+    else
+      {
+        // Undo the failed nip: the next one starts from the last solution
+        // (or from scratch if there is none).
+        if (converged_pressure)
+          problem.set_solution(converged_state);
+        else
+          {
+            TrilinosWrappers::MPI::Vector zero(saved);
+            zero = 0;
+            problem.set_solution(zero);
+          }
+        applied_pressure = converged_pressure;
+        applied_theta0   = converged_theta0;
       }
     return result;
   }

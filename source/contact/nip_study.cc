@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <rollnip/boundary_ids.h>
+#include <rollnip/contact/nip_control.h>
 #include <rollnip/contact/nip_study.h>
 #include <rollnip/output/atomic_file.h>
 
@@ -63,113 +64,6 @@ namespace rollnip
     return P; // 2 * (1/2 mean) * dx2
   }
 
-  ContactResult
-  solve_controlled_nip(InverseContact                  &contact,
-                       const Parameters::AllParameters &parameters,
-                       const double                     target)
-  {
-    const auto mode = parameters.contact.mode;
-    if (mode == Parameters::ContactMode::nip_angle)
-      return contact.solve(target);
-
-    ConditionalOStream pcout(std::cout,
-                             Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) ==
-                               0);
-    const bool         by_load = mode == Parameters::ContactMode::load;
-    const double       R0      = parameters.geometry.outer_radius;
-    const double G = 2 * (parameters.material.C1 + parameters.material.C2);
-    const double R = effective_radius(parameters);
-    // First guess from Hertz (P = pi b^2 E*/(4 R), E* = 4 G) or from the
-    // geometric overlap (b^2 ~ 2 R u0), as an angle.
-    const double b     = by_load ? std::sqrt(target * R / (numbers::PI * G))
-                                 : std::sqrt(2 * R * target);
-    double       theta = std::asin(std::min(b / R0, 0.5));
-    theta             = std::min(theta, 0.8 * parameters.geometry.sector_angle);
-    double theta_prev = 0, q_prev = 0;
-    // The bracket [lo, hi] of theta0 around the target, once known, with
-    // f = log(q / target) at its ends (scaled down by the Illinois rule).
-    double        lo = 0, hi = 0, q_lo = 0, q_hi = 0, f_lo = 0, f_hi = 0;
-    int           last_side = 0; // -1: lo moved last, +1: hi moved last
-    ContactResult r;
-    for (unsigned int it = 1; it <= parameters.contact.max_iterations; ++it)
-      {
-        r = contact.solve(theta);
-        if (!r.converged)
-          return r;
-        const double q = by_load ? r.nip_load : r.indentation;
-        pcout << "Outer iteration " << it << ": theta0 = " << std::fixed
-              << std::setprecision(6) << theta * deg << " deg gives "
-              << (by_load ? "P = " : "u0 = ") << q
-              << (by_load ? " N/mm" : " mm") << " (target " << target << ")"
-              << std::endl;
-        if (std::abs(q / target - 1) < parameters.contact.control_tolerance)
-          return r;
-        const double f    = std::log(q / target);
-        const int    side = q < target ? -1 : 1;
-        if (side < 0)
-          lo = theta, q_lo = q, f_lo = f;
-        else
-          hi = theta, q_hi = q, f_hi = f;
-        // Illinois: when the same end moves twice, halve the other end's
-        // f, so that regula falsi does not stall on one side.
-        if (side == last_side)
-          (side < 0 ? f_hi : f_lo) *= 0.5;
-        last_side = side;
-        // The discrete q(theta0) jumps where a surface node enters the
-        // zone; a target inside a jump has no solution on this mesh.
-        if (lo > 0 && hi > 0 && hi - lo < 1e-6 * hi &&
-            (q_hi - q_lo) > 100 * parameters.contact.control_tolerance * target)
-          {
-            std::ostringstream msg;
-            msg << std::setprecision(6) << "the discrete "
-                << (by_load ? "P" : "u0") << "(theta0) jumps from " << q_lo
-                << " to " << q_hi << " at theta0 = " << lo * deg
-                << " deg, where a surface node enters the contact zone; the "
-                   "target "
-                << target
-                << " lies in the jump: refine the mesh near the nip or "
-                   "prescribe theta0";
-            r.converged = false;
-            r.message   = msg.str();
-            return r;
-          }
-        // Secant on log q against log theta0 until the target is
-        // bracketed; P grows like theta0^2 (Hertz) to theta0^5 (thin
-        // layer), but the discrete P(theta0) is much flatter while theta0
-        // moves inside one surface cell, hence the low lower bound.
-        double slope = 2;
-        if (q_prev > 0)
-          slope =
-            std::clamp(std::log(q / q_prev) / std::log(theta / theta_prev),
-                       0.02,
-                       8.);
-        theta_prev = theta;
-        q_prev     = q;
-        theta      = std::clamp(theta * std::pow(target / q, 1. / slope),
-                           0.5 * theta,
-                           std::min(2 * theta,
-                                    0.95 * parameters.geometry.sector_angle));
-        // Once bracketed: regula falsi (Illinois) on log q against
-        // log theta0, where q(theta0) is close to a power law; bisect if
-        // that does not land strictly inside the bracket.
-        if (lo > 0 && hi > 0)
-          {
-            const double x =
-              std::log(lo) - f_lo * std::log(hi / lo) / (f_hi - f_lo);
-            theta = std::exp(x);
-            if (!(theta > lo && theta < hi))
-              theta = std::sqrt(lo * hi);
-          }
-      }
-    r.converged = false;
-    r.message   = "the outer iteration on theta0 did not reach the target " +
-                std::string(by_load ? "load" : "indentation") + " within " +
-                std::to_string(parameters.contact.control_tolerance) + " in " +
-                std::to_string(parameters.contact.max_iterations) +
-                " iterations";
-    return r;
-  }
-
   int
   run_nip_study(const Parameters::AllParameters &parameters,
                 std::vector<NipRow>             *rows_out)
@@ -193,6 +87,7 @@ namespace rollnip
         RollProblem &nonlinear = *nonlinear_problem;
         nonlinear.setup();
         InverseContact contact(nonlinear, parameters);
+        NipControl     control(contact, parameters);
 
         // The linear companion: same scene, linear theory, same theta0.
         Parameters::AllParameters linear_parameters = parameters;
@@ -217,10 +112,9 @@ namespace rollnip
             const std::string dir =
               sweep ? top + "/nip-" + Utilities::int_to_string(n + 1, 2) : top;
             NipRow row;
-            row.n_dofs  = nonlinear.n_dofs();
-            row.n_cells = nonlinear.n_cells();
-            row.nonlinear =
-              solve_controlled_nip(contact, parameters, values[n]);
+            row.n_dofs    = nonlinear.n_dofs();
+            row.n_cells   = nonlinear.n_cells();
+            row.nonlinear = control.solve(values[n]);
             nonlinear.set_output_directory(dir);
             RunStatus status;
             status.converged     = row.nonlinear.converged;

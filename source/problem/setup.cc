@@ -66,7 +66,19 @@ namespace rollnip
   RollProblem::setup()
   {
     TimerOutput::Scope t(timer, "setup");
-    make_roll_mesh(parameters, triangulation);
+    if (parameters.nip_fitted_mesh())
+      {
+        // Fitted to the first nip angle, or provisionally (load and
+        // indentation control fit it to every theta0 they try).
+        const bool by_angle =
+          parameters.contact.mode == Parameters::ContactMode::nip_angle;
+        nip_mesh = std::make_unique<NipFittedMesh>(parameters);
+        nip_mesh->build(triangulation,
+                        by_angle ? parameters.contact.values[0]
+                                 : 0.1 * parameters.geometry.sector_angle);
+      }
+    else
+      make_roll_mesh(parameters, triangulation);
 
     const unsigned int degree = parameters.discretization.displacement_degree();
     mapping                   = std::make_unique<MappingQ<dim>>(degree);
@@ -123,16 +135,33 @@ namespace rollnip
                                      locally_relevant_dofs,
                                      mpi_communicator);
 
-    double area = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        area += cell->measure();
-    domain_area = Utilities::MPI::sum(area, mpi_communicator);
+    domain_area = measure_area();
 
     pcout << "Mesh: " << triangulation.n_global_active_cells() << " cells, "
           << dof_handler.n_dofs() << " DoFs (" << fe->get_name() << "), "
           << Utilities::MPI::n_mpi_processes(mpi_communicator)
           << " MPI process(es)" << std::endl;
+  }
+
+  double
+  RollProblem::measure_area() const
+  {
+    double area = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        area += cell->measure();
+    return Utilities::MPI::sum(area, mpi_communicator);
+  }
+
+  void
+  RollProblem::fit_mesh_to_nip(const double theta0)
+  {
+    Assert(nip_mesh, ExcInternalError());
+    TimerOutput::Scope t(timer, "setup");
+    nip_mesh->fit(triangulation, theta0);
+    domain_area = measure_area();
+    if (use_iterative_solver())
+      set_up_schur_blocks();
   }
 
   /**

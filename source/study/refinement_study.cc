@@ -20,7 +20,7 @@
 namespace rollnip
 {
   Extrapolation
-  extrapolate(const std::vector<double> &v)
+  extrapolate(const std::vector<double> &v, const double max_order)
   {
     Extrapolation e;
     if (v.empty())
@@ -32,13 +32,18 @@ namespace rollnip
     const double d1 = v[n - 2] - v[n - 3], d2 = v[n - 1] - v[n - 2];
     if (d1 == 0 || d2 == 0)
       return e;
-    const double r = d2 / d1;
+    double r = d2 / d1;
     // Oscillating, or so slow (order < 0.15) that the estimate would rest
     // on noise.
     if (r <= 0 || r >= 0.9)
       return e;
-    e.value = v[n - 1] + d2 * r / (1 - r);
     e.order = -std::log2(r);
+    if (e.order > max_order)
+      {
+        e.capped = true;
+        r        = std::pow(2., -max_order);
+      }
+    e.value = v[n - 1] + d2 * r / (1 - r);
     e.valid = true;
     return e;
   }
@@ -234,6 +239,17 @@ namespace rollnip
                 p.mesh.circumferential_steps =
                   extend_steps(coarse_circumferential_steps(parameters),
                                variant.sector_angle);
+                // The nip-fitted mesh: the same nip cells, the cells
+                // beyond them in proportion to the sector.
+                const unsigned int n_far =
+                  parameters.mesh.circumferential_cells -
+                  parameters.mesh.nip_cells;
+                p.mesh.circumferential_cells =
+                  parameters.mesh.nip_cells +
+                  std::max(2u,
+                           static_cast<unsigned int>(
+                             std::lround(n_far * variant.sector_angle /
+                                         parameters.geometry.sector_angle)));
                 auto &far =
                   p.boundary_conditions.condition[BoundaryIds::far_edge];
                 if (variant.sector_angle > numbers::PI - 1e-9)
@@ -319,7 +335,9 @@ namespace rollnip
             std::vector<double> v;
             for (const auto &r : mine)
               v.push_back(r.values[q]);
-            ex[q]    = extrapolate(v);
+            // No element converges faster than its degree + 1 here.
+            ex[q] = extrapolate(
+              v, variant.element == Parameters::Element::q2_p1 ? 3. : 2.);
             exact[q] = ex[q].value;
           }
         limits[vi] = exact;
@@ -377,7 +395,10 @@ namespace rollnip
             text << "  " << std::setw(16) << std::left << quantities[q].label
                  << std::right << std::setprecision(8) << ex[q].value;
             if (ex[q].valid)
-              text << "   order " << std::setprecision(3) << ex[q].order;
+              text << "   order " << std::setprecision(3) << ex[q].order
+                   << (ex[q].capped ? " (above element degree + 1: "
+                                      "extrapolated with that order)"
+                                    : "");
             else
               text << "   (not extrapolated: fewer than 3 levels or not "
                       "monotone; errors are against the finest level)";

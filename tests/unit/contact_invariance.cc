@@ -64,11 +64,18 @@ main(int argc, char **argv)
                 << std::endl;
       spread.push_back(d);
     }
-  const char *names[3] = {"P", "u0", "contact pressure"};
+  // P and u0 converge at order about 1 (ratio < 0.6). The contact
+  // pressure is compared node by node, and on the nip-fitted mesh a node
+  // sits on the contact edge, where f falls like a square root: its
+  // nodal values next to the edge converge at order about 1/2 (measured
+  // ratio 0.68, order 0.56), so its spread must shrink by 0.75 (order 0.4).
+  const char  *names[3] = {"P", "u0", "contact pressure"};
+  const double ratio[3] = {0.6, 0.6, 0.75};
   for (unsigned int k = 0; k < 3; ++k)
-    checker.check(spread[1][k] < 0.6 * spread[0][k],
+    checker.check(spread[1][k] < ratio[k] * spread[0][k],
                   std::string("spread of ") + names[k] +
                     " shrinks: " + testing::num(spread[0][k]) + " -> " +
-                    testing::num(spread[1][k]) + " (ratio < 0.6)");
+                    testing::num(spread[1][k]) + " (ratio < " +
+                    testing::num(ratio[k]) + ")");
   return checker.result();
 }

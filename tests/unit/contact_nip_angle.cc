@@ -2,10 +2,10 @@
 // geometry with the paper's indenter (Rbar = 76.2 mm): for two nip widths
 // the conditions of a solved nip hold to the set tolerance (conformity of
 // the whole zone, no penetration outside it, f >= 0), the load grows with
-// the nip, and P converges under mesh refinement at an observed order.
+// the nip, and P converges under mesh refinement at an observed order
+// (at a fixed theta0 and at a fixed P, for Q1-P0 and Q2-P1).
 
-#include <rollnip/contact/inverse_contact.h>
-#include <rollnip/geometry/roll_mesh.h>
+#include <rollnip/contact/nip_control.h>
 
 #include "test_tools.h"
 
@@ -21,22 +21,30 @@ namespace
     return s.str();
   }
 
+  /// The nip at @p value: theta0 [deg] for Mode = nip angle, else P.
   ContactResult
-  solve(const double theta0_deg, const unsigned int refinements)
+  solve(const double       value,
+        const unsigned int refinements,
+        const std::string &element = "Q1-P0",
+        const std::string &mode    = "nip angle")
   {
     const auto parameters = testing::parameters_from_string(
       "subsection Mesh\n set Radial cells = 6\n set Circumferential cells = "
       "24\n"
       " set Circumferential grading = 10\n set Global refinements = " +
       std::to_string(refinements) +
+      "\nend\nsubsection Discretization\n set Element = " + element +
       "\nend\n"
-      "subsection Contact\n set Mode = nip angle\n"
-      " set Indenter radius = 76.2\n set Values = " +
-      precise(theta0_deg) + "\n set Conformity tolerance = 1e-5\nend\n");
+      "subsection Contact\n set Mode = " +
+      mode + "\n set Indenter radius = 76.2\n set Values = " + precise(value) +
+      "\n set Conformity tolerance = 1e-8\n set Control tolerance = "
+      "1e-9\nend\n");
     RollProblem problem(parameters, MPI_COMM_WORLD);
     problem.setup();
     InverseContact contact(problem, parameters);
-    return contact.solve(parameters.contact.values[0]);
+    return solve_controlled_nip(contact,
+                                parameters,
+                                parameters.contact.values[0]);
   }
 } // namespace
 
@@ -53,9 +61,9 @@ main(int argc, char **argv)
       checker.check(r.converged,
                     at + "converged in " + std::to_string(r.iterations) +
                       " iterations " + r.message);
-      checker.check(r.conformity < 1e-5,
+      checker.check(r.conformity < 1e-8,
                     at + "conformity max |gap|/u0 = " +
-                      testing::num(r.conformity) + " < 1e-5");
+                      testing::num(r.conformity) + " < 1e-8");
       checker.check(r.penetration <= 1e-5,
                     at + "penetration outside / u0 = " +
                       testing::num(r.penetration));
@@ -71,61 +79,44 @@ main(int argc, char **argv)
                 "P grows with the nip: " + testing::num(loads[0]) + " -> " +
                   testing::num(loads[1]) + " N/mm");
 
-  // Refinement of P at a fixed theta0. The discrete P(theta0) jumps where
-  // theta0 crosses a surface node (the node joins the zone with its own
-  // pressure value, and the smooth-edge row moves on by one node), by an
-  // amount of the order of the discretisation error. So P is followed just
-  // above and just below one node that exists on every level: coarse
-  // vertex 6 of the 24 cells graded by 10 over 90 deg, at 7.3711 deg.
-  const std::vector<double> widths = graded_steps(24, 90., 10.);
-  double                    node   = 0;
-  for (unsigned int k = 0; k < 6; ++k)
-    node += widths[k];
-  std::vector<double> above, below;
-  for (const unsigned int level : {0u, 1u, 2u, 3u})
-    {
-      above.push_back(solve(node + 1e-3, level).nip_load);
-      below.push_back(solve(node - 1e-3, level).nip_load);
-      std::cout << "  level " << level << ": P = " << below.back()
-                << " N/mm at theta0 = node - 0.001 deg, " << above.back()
-                << " N/mm at node + 0.001 deg" << std::endl;
-    }
-  // Just above the node the sequence is monotone; its observed order (from
-  // three successive differences) is about 1: the contact pressure has a
-  // square-root edge and the last, short segment from the node to theta0
-  // resolves it poorly. Measured 1.12 and 1.17; level 4 gives 1.13 again.
-  const double d[3] = {above[1] - above[0],
-                       above[2] - above[1],
-                       above[3] - above[2]};
-  checker.check(d[0] > 0 && d[1] > 0 && d[2] > 0,
-                "P just above the node increases monotonically");
-  const double p1 = testing::order(d[0], d[1]), p2 = testing::order(d[1], d[2]);
-  std::cout << "  observed orders of P just above the node: " << p1 << ", "
-            << p2 << std::endl;
-  checker.check(p1 > 0.9 && p1 < 2.2 && p2 > 0.9 && p2 < 2.2 &&
-                  std::abs(p1 - p2) < 0.3,
-                "observed orders " + testing::num(p1) + ", " +
-                  testing::num(p2) + " in [0.9, 2.2] and within 0.3 of " +
-                  "each other (asymptotic range)");
-  // Both one-sided sequences must head for the same limit: the jump
-  // shrinks under refinement, and the Richardson-extrapolated values agree.
-  const double jump_coarse = below[2] - above[2],
-               jump_fine   = below[3] - above[3];
-  checker.check(jump_fine > 0 && testing::order(jump_coarse, jump_fine) > 0.8,
-                "the jump of P across the node shrinks: " +
-                  testing::num(jump_coarse) + " -> " + testing::num(jump_fine) +
-                  " N/mm (order > 0.8)");
-  // Richardson (Aitken) extrapolation from the last three levels, assuming
-  // geometric convergence with the observed ratio of differences.
-  const auto extrapolate = [](const std::vector<double> &v) {
-    const double r = (v[3] - v[2]) / (v[2] - v[1]);
-    return v[3] + (v[3] - v[2]) * r / (1 - r);
-  };
-  const double limit_above = extrapolate(above),
-               limit_below = extrapolate(below);
-  std::cout << "  Richardson limits: " << limit_above << " (above), "
-            << limit_below << " (below) N/mm" << std::endl;
-  checker.check(std::abs(limit_above / limit_below - 1) < 1e-3,
-                "the extrapolated limits from both sides agree to 0.1 %");
+  // Refinement on the nip-fitted mesh, where the contact edge is a node
+  // at every theta0: P at a fixed theta0 (7.3711 deg) and theta0 at a
+  // fixed P (8.4 N/mm, the same nip) converge monotonically, Q1-P0 at an
+  // observed order between 1 and 2.5; Q2-P1 monotonically too.
+  for (const std::string element : {"Q1-P0", "Q2-P1"})
+    for (const std::string mode : {"nip angle", "load"})
+      {
+        const bool          by_angle = mode == "nip angle";
+        std::vector<double> v;
+        const unsigned int  n_levels = element == "Q1-P0" ? 4 : 3;
+        for (unsigned int level = 0; level < n_levels; ++level)
+          {
+            const ContactResult r =
+              solve(by_angle ? 7.3711 : 8.4, level, element, mode);
+            v.push_back(by_angle ? r.nip_load : r.theta0 * 180 / numbers::PI);
+            std::cout << "  " << element << ", " << mode << ", level " << level
+                      << ": " << (by_angle ? "P = " : "theta0 = ") << v.back()
+                      << (by_angle ? " N/mm" : " deg") << std::endl;
+          }
+        const std::string what =
+          element + ", " +
+          (by_angle ? "P at theta0 = 7.3711 deg" : "theta0 at P = 8.4 N/mm");
+        bool monotone = true;
+        for (std::size_t k = 2; k < v.size(); ++k)
+          monotone = monotone && (v[k] - v[k - 1]) * (v[1] - v[0]) > 0 &&
+                     std::abs(v[k] - v[k - 1]) < std::abs(v[k - 1] - v[k - 2]);
+        checker.check(monotone, what + ": monotone, differences shrinking");
+        if (v.size() == 4)
+          {
+            const double p1 = testing::order(v[1] - v[0], v[2] - v[1]),
+                         p2 = testing::order(v[2] - v[1], v[3] - v[2]);
+            // Measured on the default nip-fitted mesh: 2.4 then 1.96
+            // for P at theta0 = 7.3711 deg.
+            checker.check(p1 > 0.8 && p1 < 2.6 && p2 > 0.8 && p2 < 2.2,
+                          what + ": observed orders " + testing::num(p1) +
+                            " in [0.8, 2.6], " + testing::num(p2) +
+                            " in [0.8, 2.2]");
+          }
+      }
   return checker.result();
 }

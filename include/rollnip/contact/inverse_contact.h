@@ -47,8 +47,15 @@ namespace rollnip
     InverseContact(RollProblem                     &problem,
                    const Parameters::AllParameters &parameters);
 
+    /// The nip at the reference half nip angle @p theta0 [rad]. A nip that
+    /// does not converge leaves the state of the last converged one.
     ContactResult
     solve(const double theta0);
+
+    /// The largest theta0 [rad] the mesh takes: half the sector on the
+    /// nip-fitted mesh, else that of the third surface node from the end.
+    double
+    max_nip_angle();
 
   private:
     struct SurfaceNode
@@ -76,6 +83,10 @@ namespace rollnip
     /// first solve) and its theta0: the next solve starts from them.
     std::function<double(double)> applied_pressure;
     double                        applied_theta0 = 0;
+    /// The state, pressure and theta0 of the last converged nip.
+    TrilinosWrappers::MPI::Vector converged_state;
+    std::function<double(double)> converged_pressure;
+    double                        converged_theta0 = 0;
   };
 
   /// contact.txt (scalars and checks) and contact_pressure.csv (f at the

@@ -2,6 +2,7 @@
 #define rollnip_contact_nip_study_h
 
 #include <rollnip/contact/inverse_contact.h>
+#include <rollnip/contact/nip_control.h>
 #include <rollnip/parameters.h>
 
 #include <string>
@@ -41,15 +42,6 @@ namespace rollnip
   run_nip_study(const Parameters::AllParameters &parameters,
                 std::vector<NipRow>             *rows_out = nullptr);
 
-  /**
-   * The nip with the controlled quantity @p target (P or u0 by
-   * Contact/Mode; theta0 [rad] for nip angle): an outer secant iteration on
-   * log theta0 around the inverse iteration of @p contact.
-   */
-  ContactResult
-  solve_controlled_nip(InverseContact                  &contact,
-                       const Parameters::AllParameters &parameters,
-                       const double                     target);
 } // namespace rollnip
 
 #endif

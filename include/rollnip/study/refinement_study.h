@@ -3,6 +3,7 @@
 
 #include <rollnip/parameters.h>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -15,12 +16,19 @@ namespace rollnip
     double value = 0;     ///< Richardson-extrapolated, or the finest if none
     double order = 0;     ///< observed order from the last three levels
     bool   valid = false; ///< false: not monotone, or fewer than 3 levels
+    /// The observed order was above @p max_order, so the value was
+    /// extrapolated with max_order instead (an order no element reaches
+    /// comes from a pre-asymptotic sequence, and would overstate the
+    /// accuracy).
+    bool capped = false;
   };
 
   /// From the last three values v1, v2, v3: with r = (v3 - v2)/(v2 - v1)
-  /// in (0, 0.9), order = -log2 r and value = v3 + (v3 - v2) r / (1 - r).
+  /// in (0, 0.9), order = -log2 r and value = v3 + (v3 - v2) r / (1 - r),
+  /// with r raised to 2^-max_order if the order is above @p max_order.
   Extrapolation
-  extrapolate(const std::vector<double> &values);
+  extrapolate(const std::vector<double> &values,
+              const double max_order = std::numeric_limits<double>::max());
 
   /**
    * The refinement study (Study subsection): the scene of @p parameters at

@@ -1,0 +1,156 @@
+#!/usr/bin/env python3
+"""What load and indentation control cost, and what the mesh gives for it,
+on the default scene (parameters/batra1980.prm: run-30 geometry, Rbar =
+76.2 mm, Q1-P0).
+
+Usage: python3 benchmarks/nip_control_benchmark.py [N]
+    N   timed runs per sweep, default 3 (the table shows the median wall time)
+
+Uses build/rollnip, or $ROLLNIP_BIN (e.g. a build of an older version, for a
+before/after). Prints two tables and writes them as CSV to
+benchmarks/results/:
+
+1. Sweeps: four indentations u0 = 0.5, 1, 2, 3 mm at level 1 and ten loads
+   P = 1 ... 20 N/mm (geometric) at level 2, each one run of rollnip with
+   all targets in Contact/Values. Columns: targets reached, contact solves
+   per target (median and largest; a contact solve is one inverse iteration
+   at one theta0, counted from the 'Contact iteration, theta0' lines), and
+   the wall time of the whole process (median of N).
+2. Accuracy: P at theta0 = 7.371101 deg at levels 0 to 3 with the
+   nip-fitted mesh (Mesh/Nip fitting = on) and with the fixed graded mesh
+   (off), against the nip-fitted level-4 value. A binary without the
+   Nip fitting entry runs the fixed mesh only.
+"""
+
+import csv
+import os
+import re
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROLLNIP = os.environ.get("ROLLNIP_BIN", os.path.join(ROOT, "build", "rollnip"))
+BASE = os.path.join(ROOT, "parameters", "batra1980.prm")
+LOADS = [1 * 20 ** (i / 9) for i in range(10)]
+SWEEPS = [("4 indentations", "indentation", [0.5, 1, 2, 3], 1),
+          ("10 loads", "load", LOADS, 2)]
+THETA_ACCURACY = 7.371101
+
+
+def fail(message):
+    print("nip_control_benchmark: error: " + message, file=sys.stderr)
+    sys.exit(1)
+
+
+def run(directory, mode, values, level, fitting=None):
+    text = open(BASE).read() + f"""
+# --- benchmark overrides ---
+subsection Mesh
+  set Global refinements = {level}
+{f'  set Nip fitting = {fitting}' if fitting else ''}
+end
+subsection Contact
+  set Mode = {mode}
+  set Values = {', '.join(f'{v:.6g}' for v in values)}
+  set Compare with linear theory = false
+end
+subsection Output
+  set Directory = {directory}/out
+  set Write VTU = false
+  set Print timing = false
+end
+"""
+    prm = os.path.join(directory, "run.prm")
+    with open(prm, "w") as f:
+        f.write(text)
+    t0 = time.perf_counter()
+    p = subprocess.run([ROLLNIP, prm], capture_output=True, text=True)
+    return time.perf_counter() - t0, p
+
+
+def solves_per_target(stdout):
+    """Contact solves before each 'Nip n:' line (one per reached target)."""
+    counts, n = [], 0
+    for line in stdout.splitlines():
+        if line.startswith("Contact iteration, theta0"):
+            n += 1
+        elif re.match(r"Nip \d+: P from", line):
+            counts.append(n)
+            n = 0
+    return counts
+
+
+def last_load(stdout):
+    rows = re.findall(r"^\s+([0-9.]+)\s+([0-9.]+)\s+([0-9.]+)\s", stdout, re.M)
+    return float(rows[-1][1]) if rows else float("nan")
+
+
+def main():
+    n = int(sys.argv[1]) if len(sys.argv) > 1 else 3
+    if n < 1:
+        fail("N must be a positive integer")
+    if not os.access(ROLLNIP, os.X_OK):
+        fail(f"{ROLLNIP} not found; build it with: bash scripts/setup.sh")
+    has_fitting = "Nip fitting" in subprocess.run(
+        [ROLLNIP, "--print-parameters"], capture_output=True, text=True).stdout
+    print(f"rollnip nip control benchmark: {ROLLNIP}, {n} run(s) per sweep "
+          f"(median), 1 MPI process, nproc {os.cpu_count()}, nip-fitted mesh "
+          f"{'available (default)' if has_fitting else 'not available'}")
+    sweep_header = ["sweep", "level", "targets reached", "solves/target median",
+                    "solves/target max", "wall s"]
+    sweep_rows = []
+    with tempfile.TemporaryDirectory(prefix="rollnip-control-bench.") as tmp:
+        for name, mode, values, level in SWEEPS:
+            runs = [run(tmp, mode, values, level) for _ in range(n)]
+            counts = solves_per_target(runs[0][1].stdout)
+            wall = statistics.median(r[0] for r in runs)
+            sweep_rows.append([name, level, f"{len(counts)} of {len(values)}",
+                               statistics.median(counts) if counts else "-",
+                               max(counts) if counts else "-", f"{wall:.2f}"])
+            print("| " + " | ".join(str(x) for x in sweep_rows[-1]) + " |",
+                  flush=True)
+        accuracy_header = ["mesh", "level", "DoFs", "P N/mm", "error vs fitted level 4"]
+        accuracy_rows = []
+        meshes = ["on", "off"] if has_fitting else [None]
+        reference = None
+        if has_fitting:
+            _, p = run(tmp, "nip angle", [THETA_ACCURACY], 4, "on")
+            reference = last_load(p.stdout)
+        for mesh in meshes:
+            for level in range(4):
+                _, p = run(tmp, "nip angle", [THETA_ACCURACY], level, mesh)
+                dofs = re.search(r"Mesh: \d+ cells, (\d+) DoFs", p.stdout)
+                P = last_load(p.stdout)
+                label = {"on": "nip-fitted", "off": "fixed", None: "fixed"}[mesh]
+                error = f"{P / reference - 1:+.2e}" if reference else "-"
+                accuracy_rows.append([label, level, dofs.group(1) if dofs else "-",
+                                      f"{P:.5f}", error])
+    print()
+    print("| " + " | ".join(sweep_header) + " |")
+    print("|" + "---|" * len(sweep_header))
+    for r in sweep_rows:
+        print("| " + " | ".join(str(x) for x in r) + " |")
+    print(f"\nP at theta0 = {THETA_ACCURACY} deg"
+          + (f", reference: nip-fitted level 4, P = {reference:.6f} N/mm" if reference else ""))
+    print("| " + " | ".join(accuracy_header) + " |")
+    print("|" + "---|" * len(accuracy_header))
+    for r in accuracy_rows:
+        print("| " + " | ".join(str(x) for x in r) + " |")
+    os.makedirs(os.path.join(ROOT, "benchmarks", "results"), exist_ok=True)
+    out = os.path.join(ROOT, "benchmarks", "results",
+                       time.strftime("nip-control-%Y%m%d-%H%M%S.csv"))
+    with open(out, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(sweep_header)
+        w.writerows(sweep_rows)
+        w.writerow([])
+        w.writerow(accuracy_header)
+        w.writerows(accuracy_rows)
+    print(f"\nwritten: {os.path.relpath(out, ROOT)}")
+
+
+if __name__ == "__main__":
+    main()

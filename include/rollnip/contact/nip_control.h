@@ -1,0 +1,80 @@
+#ifndef rollnip_contact_nip_control_h
+#define rollnip_contact_nip_control_h
+
+#include <rollnip/contact/inverse_contact.h>
+#include <rollnip/parameters.h>
+
+#include <vector>
+
+namespace rollnip
+{
+  /**
+   * Load and indentation control (Contact/Mode = load or indentation,
+   * doc/intro.md section 7): finds the theta0 whose nip carries the target
+   * P or has the target u0. On the nip-fitted mesh q(theta0) (q = P or u0)
+   * is smooth and rising, close to a power law, so a secant iteration on
+   * log q against log theta0 converges in a few contact solves:
+   *  - it starts from the power law through the two converged nips of
+   *    the sweep closest to the target, or, for the first nip, from a
+   *    guess below the half-width of Hertz and of the thin layer (both
+   *    softer than a bonded layer, so both too wide);
+   *  - a contact solve that fails is stepped back from, halfway to the
+   *    largest converged theta0 below it;
+   *  - a target is refused only when theta0 would pass the largest the
+   *    mesh takes, or the contact solve keeps failing just above a
+   *    converged nip (the cover cannot carry more); the message names the
+   *    largest q reached.
+   * One object per sweep: every converged nip is remembered.
+   */
+  class NipControl
+  {
+  public:
+    NipControl(InverseContact &contact, const Parameters::AllParameters &p);
+
+    /// The nip for @p target: theta0 [rad] for Mode = nip angle, else P
+    /// [N/mm] or u0 [mm].
+    ContactResult
+    solve(const double target);
+
+    /// Contact solves (inverse iterations) run so far, failed ones too.
+    unsigned int
+    n_contact_solves() const
+    {
+      return n_solves;
+    }
+
+  private:
+    struct Point
+    {
+      double theta; ///< [rad]
+      double q;     ///< P [N/mm] or u0 [mm]
+    };
+
+    /// The first theta0 to try for @p target.
+    double
+    first_guess(const double target) const;
+
+    /// The power-law (secant) estimate of theta0 for @p target from the
+    /// two converged nips whose q are closest to it.
+    double
+    secant_guess(const double target) const;
+
+    /// The controlled quantity of a nip.
+    double
+    controlled(const ContactResult &r) const;
+
+    InverseContact                  &contact;
+    const Parameters::AllParameters &parameters;
+    const bool                       by_load;
+    std::vector<Point>               converged; ///< sorted by theta
+    unsigned int                     n_solves = 0;
+  };
+
+  /// The nip for @p target with a NipControl of its own (no sweep).
+  ContactResult
+  solve_controlled_nip(InverseContact                  &contact,
+                       const Parameters::AllParameters &parameters,
+                       const double                     target);
+} // namespace rollnip
+
+#endif

@@ -1,0 +1,194 @@
+#include <deal.II/base/mpi.h>
+
+#include <rollnip/contact/nip_control.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace rollnip
+{
+  namespace
+  {
+    constexpr double deg = 180. / numbers::PI;
+
+    /// Slopes of log q against log theta0 allowed to the secant: P rises
+    /// like theta0^2 (Hertz) to theta0^5 (thin layer), u0 like theta0^2;
+    /// the bounds only catch a secant through two nearly equal points.
+    constexpr double min_slope = 0.5, max_slope = 10., default_slope = 3.;
+
+    /// A theta0 this close above a converged one that still fails means
+    /// the cover cannot carry more.
+    constexpr double step_back_resolution = 1e-2;
+  } // namespace
+
+  NipControl::NipControl(InverseContact                  &contact,
+                         const Parameters::AllParameters &p)
+      : contact(contact)
+      , parameters(p)
+      , by_load(p.contact.mode == Parameters::ContactMode::load)
+  {}
+
+  double
+  NipControl::controlled(const ContactResult &r) const
+  {
+    return by_load ? r.nip_load : r.indentation;
+  }
+
+  double
+  NipControl::first_guess(const double target) const
+  {
+    const auto  &g  = parameters.geometry;
+    const double R0 = g.outer_radius, h = R0 - g.inner_radius;
+    const double Rb = parameters.contact.indenter_radius;
+    const double R  = std::isfinite(Rb) ? 1. / (1. / R0 + 1. / Rb) : R0;
+    const double G  = 2 * (parameters.material.C1 + parameters.material.C2);
+    double       b;
+    if (by_load)
+      {
+        // Hertz (E* = 4 G) and the thin layer give too wide a nip for a
+        // bonded layer of finite thickness: start below both.
+        const double b_hertz = std::sqrt(target * R / (numbers::PI * G));
+        const double b_thin  = std::pow(7.5 * R * h * h * h * target / G, 0.2);
+        b                    = 0.7 * std::min(b_hertz, b_thin);
+      }
+    else
+      b = std::sqrt(2 * R * target); // the chord of the geometric overlap
+    return std::asin(std::min(b / R0, 0.9));
+  }
+
+  double
+  NipControl::secant_guess(const double target) const
+  {
+    Assert(!converged.empty(), ExcInternalError());
+    std::vector<Point> near = converged;
+    std::sort(near.begin(), near.end(), [target](const auto &a, const auto &b) {
+      return std::abs(std::log(a.q / target)) <
+             std::abs(std::log(b.q / target));
+    });
+    double slope = default_slope;
+    if (near.size() > 1 && near[0].theta != near[1].theta)
+      slope = std::log(near[0].q / near[1].q) /
+              std::log(near[0].theta / near[1].theta);
+    if (!std::isfinite(slope))
+      slope = default_slope;
+    slope = std::clamp(slope, min_slope, max_slope);
+    return near[0].theta * std::pow(target / near[0].q, 1. / slope);
+  }
+
+  ContactResult
+  NipControl::solve(const double target)
+  {
+    const auto &c = parameters.contact;
+    if (c.mode == Parameters::ContactMode::nip_angle)
+      {
+        ++n_solves;
+        return contact.solve(target);
+      }
+    ConditionalOStream pcout(std::cout,
+                             Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) ==
+                               0);
+    const double       theta_max = contact.max_nip_angle();
+    const std::string  name      = by_load ? "P" : "u0";
+    const std::string  unit      = by_load ? " N/mm" : " mm";
+    auto               largest   = [&]() {
+      std::ostringstream s;
+      s << std::setprecision(6);
+      if (converged.empty())
+        s << "no nip converged";
+      else
+        s << "the largest " << name << " reached is " << converged.back().q
+          << unit << " at theta0 = " << converged.back().theta * deg << " deg";
+      return s.str();
+    };
+    auto refuse = [&](ContactResult r, const std::string &why) {
+      std::ostringstream s;
+      s << std::setprecision(6) << "the target " << name << " = " << target
+        << unit << " is out of reach: " << why << "; " << largest();
+      r.converged = false;
+      r.message   = s.str();
+      return r;
+    };
+
+    double theta =
+      converged.empty() ? first_guess(target) : secant_guess(target);
+    theta                   = std::min(theta, theta_max);
+    double        failed_at = std::numeric_limits<double>::max();
+    ContactResult r;
+    for (unsigned int it = 1; it <= c.max_iterations; ++it)
+      {
+        ++n_solves;
+        r            = contact.solve(theta);
+        double below = 0; // the largest converged theta0 under theta
+        for (const auto &p : converged)
+          if (p.theta < theta)
+            below = p.theta;
+        if (!r.converged)
+          {
+            failed_at = std::min(failed_at, theta);
+            if (theta - below < step_back_resolution * theta)
+              return refuse(r,
+                            "the contact iteration fails for every theta0 "
+                            "just above the largest converged one (" +
+                              r.message + ")");
+            pcout << "Outer iteration " << it << ": theta0 = " << std::fixed
+                  << std::setprecision(6) << theta * deg
+                  << " deg failed; stepping back" << std::endl;
+            theta = below > 0 ? 0.5 * (below + theta) : 0.5 * theta;
+            continue;
+          }
+        const double q = controlled(r);
+        converged.insert(std::upper_bound(converged.begin(),
+                                          converged.end(),
+                                          theta,
+                                          [](const double t, const Point &p) {
+                                            return t < p.theta;
+                                          }),
+                         Point{theta, q});
+        pcout << "Outer iteration " << it << ": theta0 = " << std::fixed
+              << std::setprecision(6) << theta * deg << " deg gives " << name
+              << " = " << q << unit << " (target " << target << ")"
+              << std::endl;
+        if (std::abs(q / target - 1) < c.control_tolerance)
+          return r;
+        if (q < target && theta >= theta_max * (1 - 1e-12))
+          {
+            std::ostringstream s;
+            s << std::setprecision(6) << "theta0 would pass " << theta_max * deg
+              << " deg, the largest nip this mesh takes"
+              << (contact.max_nip_angle() > 0 ? " (half the sector angle on "
+                                                "the nip-fitted mesh)"
+                                              : "");
+            return refuse(r, s.str());
+          }
+        // The secant, kept inside the bracket of converged nips around
+        // the target and below a theta0 that failed.
+        double lo = 0, hi = std::min(failed_at, theta_max);
+        for (const auto &p : converged)
+          if (p.q < target)
+            lo = std::max(lo, p.theta);
+          else
+            hi = std::min(hi, p.theta);
+        double next = std::clamp(secant_guess(target), 0.5 * theta, 2 * theta);
+        if (!(next > lo && next < hi))
+          next = lo > 0 ? 0.5 * (lo + hi) : 0.5 * hi;
+        theta = std::min(next, theta_max);
+      }
+    return refuse(r,
+                  "the iteration on theta0 did not reach the control "
+                  "tolerance " +
+                    std::to_string(c.control_tolerance) + " in " +
+                    std::to_string(c.max_iterations) + " contact solves");
+  }
+
+  ContactResult
+  solve_controlled_nip(InverseContact                  &contact,
+                       const Parameters::AllParameters &parameters,
+                       const double                     target)
+  {
+    NipControl control(contact, parameters);
+    return control.solve(target);
+  }
+} // namespace rollnip
