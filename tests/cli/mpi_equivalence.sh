@@ -1,33 +1,36 @@
 #!/usr/bin/env bash
 # One process and two MPI processes must give the same results.
 #
-# Usage: bash mpi_equivalence.sh ROLLNIP MPIEXEC NUMDIFF PRESSURE_PRM [METHOD]
-#   PRESSURE_PRM  parameters/parabolic_pressure.prm (the paper's pressure scene)
-#   METHOD        Linear solver/Method: direct (default) or gmres-amg
+# Usage: bash mpi_equivalence.sh ROLLNIP MPIEXEC NUMDIFF PRM [METHOD]
+#   PRM     a shipped scene: parameters/parabolic_pressure.prm (the paper's
+#           pressure scene) or a contact scene such as
+#           parameters/load_controlled.prm (nip-fitted mesh, load control)
+#   METHOD  Linear solver/Method: direct (default) or gmres-amg
 #
-# Runs the scene of PRESSURE_PRM on a smaller mesh (the overrides are appended
-# to a copy: a later 'set' wins) once without mpirun and once with
-# 'MPIEXEC -np 2', each with its own output directory, then compares with
-# numdiff (relative tolerance 1e-8, absolute 1e-12, fields split at blanks,
-# commas and '='): summary.txt without the lines that must differ (timings,
-# mpi_processes, threads, the GMRES counts), outer_surface.csv and
-# bond_surface.csv. With gmres-amg the AMG hierarchy differs between one and
-# two processes; Newton still converges to the same state.
+# Runs the scene of PRM on a smaller mesh (the overrides are appended to a
+# copy: a later 'set' wins) once without mpirun and once with 'MPIEXEC -np 2',
+# each with its own output directory, then compares with numdiff (relative
+# tolerance 1e-8, absolute 1e-12, fields split at blanks, commas and '='):
+# summary.txt without the lines that must differ (timings, mpi_processes,
+# threads, the GMRES counts), outer_surface.csv and bond_surface.csv; for a
+# contact scene these of every nip-NN/ directory, its contact_pressure.csv,
+# and nip_characteristic.csv. With gmres-amg the AMG hierarchy differs
+# between one and two processes; Newton still converges to the same state.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 [ $# -eq 4 ] || [ $# -eq 5 ] ||
-  fail "usage: mpi_equivalence.sh ROLLNIP MPIEXEC NUMDIFF PRESSURE_PRM [METHOD]"
+  fail "usage: mpi_equivalence.sh ROLLNIP MPIEXEC NUMDIFF PRM [METHOD]"
 rollnip="$1"
 mpiexec="$2"
 numdiff="$3"
-batra="$4"
+scene="$4"
 method="${5:-direct}"
 require_executable rollnip "$rollnip"
 require_executable "mpiexec (MPIEXEC_EXECUTABLE)" "$mpiexec"
 require_executable "numdiff (needed to compare the results)" "$numdiff"
-[ -f "$batra" ] || fail "parameter file '$batra' not found"
-start_test "mpi_equivalence_$method"
+[ -f "$scene" ] || fail "parameter file '$scene' not found"
+start_test "mpi_equivalence_$(basename "$scene" .prm)_$method"
 
 # Open MPI refuses to start as root unless told (containers, CI).
 if [ "$(id -u)" -eq 0 ]; then
@@ -42,14 +45,14 @@ fi
 
 make_prm()
 {
-  cp "$batra" "$1"
+  cp "$scene" "$1"
   cat >> "$1" <<PRM
 
 # --- overrides of tests/cli/mpi_equivalence.sh: a small mesh, own output
 subsection Mesh
   set Radial cells          = 3
-  set Circumferential cells = 8
-  set Global refinements    = 1
+  set Circumferential cells = 16
+  set Global refinements    = 0
 end
 subsection Output
   set Directory    = $2
@@ -86,22 +89,37 @@ if [ "$rc" -ne 0 ]; then
 fi
 pass "run on 2 MPI processes finished"
 
+# A contact scene writes one directory per nip, a pressure scene one result.
+results=(.)
+if [ -d out_serial/nip-01 ]; then
+  results=()
+  for d in out_serial/nip-[0-9]*; do results+=("$(basename "$d")"); done
+  [ -f out_serial/nip_characteristic.csv ] ||
+    fail "out_serial/nip_characteristic.csv missing"
+fi
 for dir in out_serial out_parallel; do
-  [ -f "$dir/summary.txt" ] || fail "$dir/summary.txt missing"
+  for r in "${results[@]}"; do
+    [ -f "$dir/$r/summary.txt" ] || fail "$dir/$r/summary.txt missing"
+  done
 done
-[ "$(summary_value out_serial/summary.txt mpi_processes)" -eq 1 ] ||
+first="${results[0]}"
+[ "$(summary_value "out_serial/$first/summary.txt" mpi_processes)" -eq 1 ] ||
   fail "the serial run did not report mpi_processes = 1"
-[ "$(summary_value out_parallel/summary.txt mpi_processes)" -eq 2 ] ||
+[ "$(summary_value "out_parallel/$first/summary.txt" mpi_processes)" -eq 2 ] ||
   fail "the parallel run did not report mpi_processes = 2"
 pass "summary.txt reports mpi_processes = 1 and 2"
-[ "$(summary_value out_serial/summary.txt status)" = converged ] ||
-  fail "the serial run did not converge"
-pass "status = converged"
+for r in "${results[@]}"; do
+  [ "$(summary_value "out_serial/$r/summary.txt" status)" = converged ] ||
+    fail "the serial run did not converge ($r)"
+done
+pass "status = converged (${#results[@]} result(s))"
 
 # Everything except the timings and the process count must agree.
 for dir in out_serial out_parallel; do
-  grep -v -E '^(wall_time_s|time_[a-z_]*_s|mpi_processes|threads|gmres_iterations|gmres_solves) =' \
-    "$dir/summary.txt" > "$dir/summary_compared.txt"
+  for r in "${results[@]}"; do
+    grep -v -E '^(wall_time_s|time_[a-z_]*_s|mpi_processes|threads|gmres_iterations|gmres_solves) =' \
+      "$dir/$r/summary.txt" > "$dir/$r/summary_compared.txt"
+  done
 done
 
 compare()
@@ -115,10 +133,16 @@ compare()
     fail "$1 differs between 1 and 2 MPI processes"
   fi
 }
-compare summary_compared.txt
-compare outer_surface.csv
-compare bond_surface.csv
-echo "serial:   P = $(summary_value out_serial/summary.txt nip_load_P_N_per_mm) N/mm," \
-  "u0 = $(summary_value out_serial/summary.txt indentation_u0_mm) mm"
-echo "parallel: P = $(summary_value out_parallel/summary.txt nip_load_P_N_per_mm) N/mm," \
-  "u0 = $(summary_value out_parallel/summary.txt indentation_u0_mm) mm"
+for r in "${results[@]}"; do
+  compare "$r/summary_compared.txt"
+  compare "$r/outer_surface.csv"
+  compare "$r/bond_surface.csv"
+  if [ "$r" != . ]; then compare "$r/contact_pressure.csv"; fi
+done
+if [ "$first" != . ]; then compare nip_characteristic.csv; fi
+for r in "${results[@]}"; do
+  echo "$r serial:   P = $(summary_value "out_serial/$r/summary.txt" nip_load_P_N_per_mm) N/mm," \
+    "u0 = $(summary_value "out_serial/$r/summary.txt" indentation_u0_mm) mm"
+  echo "$r parallel: P = $(summary_value "out_parallel/$r/summary.txt" nip_load_P_N_per_mm) N/mm," \
+    "u0 = $(summary_value "out_parallel/$r/summary.txt" indentation_u0_mm) mm"
+done
