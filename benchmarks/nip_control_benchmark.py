@@ -16,15 +16,20 @@ benchmarks/results/:
    per target (median and largest; a contact solve is one inverse iteration
    at one theta0, counted from the 'Contact iteration, theta0' lines), and
    the wall time of the whole process (median of N).
-2. Accuracy: P at theta0 = 7.371101 deg at levels 0 to 3 with the
+2. Accuracy: P, u0 and the peak pressure at theta0 = 2, 4, 6, 7.371101,
+   10 and 12 deg (one run per mesh and level) at levels 0 to 3 with the
    nip-fitted mesh (Mesh/Nip fitting = on) and with the fixed graded mesh
-   (off), against the nip-fitted level-4 value. A binary without the
+   (off), against the nip-fitted level-4 values: the largest error over the
+   six nips per mesh and level, and the error of P at each nip (on the
+   fixed mesh it depends on where theta0 falls between surface nodes). A binary without the
    Nip fitting entry runs the fixed mesh only.
 """
 
 import csv
+import math
 import os
 import re
+import shutil
 import statistics
 import subprocess
 import sys
@@ -37,7 +42,7 @@ BASE = os.path.join(ROOT, "parameters", "batra1980.prm")
 LOADS = [1 * 20 ** (i / 9) for i in range(10)]
 SWEEPS = [("4 indentations", "indentation", [0.5, 1, 2, 3], 1),
           ("10 loads", "load", LOADS, 2)]
-THETA_ACCURACY = 7.371101
+THETAS = [2, 4, 6, 7.371101, 10, 12]  # deg
 
 
 def fail(message):
@@ -63,6 +68,7 @@ subsection Output
   set Print timing = false
 end
 """
+    shutil.rmtree(os.path.join(directory, "out"), ignore_errors=True)
     prm = os.path.join(directory, "run.prm")
     with open(prm, "w") as f:
         f.write(text)
@@ -83,9 +89,21 @@ def solves_per_target(stdout):
     return counts
 
 
-def last_load(stdout):
-    rows = re.findall(r"^\s+([0-9.]+)\s+([0-9.]+)\s+([0-9.]+)\s", stdout, re.M)
-    return float(rows[-1][1]) if rows else float("nan")
+def nip_results(directory, n):
+    """P [N/mm], u0 [mm] and peak f [MPa] of the nips 1..n, from their
+    summary.txt (full precision)."""
+    keys = ("nip_load_P_N_per_mm", "indentation_u0_mm",
+            "peak_applied_pressure_MPa")
+    results = []
+    for i in range(1, n + 1):
+        path = os.path.join(directory, "out", f"nip-{i:02d}", "summary.txt")
+        values = {}
+        if os.path.exists(path):
+            for line in open(path):
+                key, _, value = line.partition(" = ")
+                values[key.strip()] = value.strip()
+        results.append([float(values.get(k, "nan")) for k in keys])
+    return results
 
 
 def main():
@@ -112,33 +130,57 @@ def main():
                                max(counts) if counts else "-", f"{wall:.2f}"])
             print("| " + " | ".join(str(x) for x in sweep_rows[-1]) + " |",
                   flush=True)
-        accuracy_header = ["mesh", "level", "DoFs", "P N/mm", "error vs fitted level 4"]
-        accuracy_rows = []
+        accuracy_header = ["mesh", "level", "DoFs", "max |error P|",
+                           "max |error u0|", "max |error peak f|"]
+        accuracy_rows, p_error_rows = [], []
         meshes = ["on", "off"] if has_fitting else [None]
         reference = None
         if has_fitting:
-            _, p = run(tmp, "nip angle", [THETA_ACCURACY], 4, "on")
-            reference = last_load(p.stdout)
+            _, p = run(tmp, "nip angle", THETAS, 4, "on")
+            reference = nip_results(tmp, len(THETAS))
         for mesh in meshes:
             for level in range(4):
-                _, p = run(tmp, "nip angle", [THETA_ACCURACY], level, mesh)
+                _, p = run(tmp, "nip angle", THETAS, level, mesh)
                 dofs = re.search(r"Mesh: \d+ cells, (\d+) DoFs", p.stdout)
-                P = last_load(p.stdout)
+                results = nip_results(tmp, len(THETAS))
                 label = {"on": "nip-fitted", "off": "fixed", None: "fixed"}[mesh]
-                error = f"{P / reference - 1:+.2e}" if reference else "-"
-                accuracy_rows.append([label, level, dofs.group(1) if dofs else "-",
-                                      f"{P:.5f}", error])
+                row = [label, level, dofs.group(1) if dofs else "-"]
+                if reference:
+                    errors = [[v / r - 1 for v, r in zip(nip, ref)]
+                              for nip, ref in zip(results, reference)]
+                    # A nip that did not converge has no summary: "failed".
+                    ok = [e for e in errors if all(math.isfinite(x) for x in e)]
+                    row += [f"{max(abs(e[k]) for e in ok):.2e}" if ok else "-"
+                            for k in range(3)]
+                    if len(ok) < len(errors):
+                        row[-1] += f" ({len(errors) - len(ok)} nip(s) failed)"
+                    p_error_rows.append([label, level]
+                                        + [f"{e[0]:+.2e}" if math.isfinite(e[0])
+                                           else "failed" for e in errors])
+                else:
+                    row += ["-"] * 3
+                accuracy_rows.append(row)
     print()
     print("| " + " | ".join(sweep_header) + " |")
     print("|" + "---|" * len(sweep_header))
     for r in sweep_rows:
         print("| " + " | ".join(str(x) for x in r) + " |")
-    print(f"\nP at theta0 = {THETA_ACCURACY} deg"
-          + (f", reference: nip-fitted level 4, P = {reference:.6f} N/mm" if reference else ""))
+    thetas = ", ".join(f"{t:g}" for t in THETAS)
+    print(f"\nAccuracy over theta0 = {thetas} deg against the nip-fitted "
+          "level 4 (largest relative error of the six nips)")
     print("| " + " | ".join(accuracy_header) + " |")
     print("|" + "---|" * len(accuracy_header))
     for r in accuracy_rows:
         print("| " + " | ".join(str(x) for x in r) + " |")
+    p_error_header = ["mesh", "level"] + [f"P error at {t:g} deg" for t in THETAS]
+    if p_error_rows:
+        print("\nRelative error of P at each theta0"
+              + "".join(f"; reference P({t:g}) = {r[0]:.6f} N/mm"
+                        for t, r in zip(THETAS, reference)))
+        print("| " + " | ".join(p_error_header) + " |")
+        print("|" + "---|" * len(p_error_header))
+        for r in p_error_rows:
+            print("| " + " | ".join(str(x) for x in r) + " |")
     os.makedirs(os.path.join(ROOT, "benchmarks", "results"), exist_ok=True)
     out = os.path.join(ROOT, "benchmarks", "results",
                        time.strftime("nip-control-%Y%m%d-%H%M%S.csv"))
@@ -149,6 +191,9 @@ def main():
         w.writerow([])
         w.writerow(accuracy_header)
         w.writerows(accuracy_rows)
+        w.writerow([])
+        w.writerow(p_error_header)
+        w.writerows(p_error_rows)
     print(f"\nwritten: {os.path.relpath(out, ROOT)}")
 
 

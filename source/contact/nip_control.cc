@@ -17,7 +17,10 @@ namespace rollnip
     /// Slopes of log q against log theta0 allowed to the secant: P rises
     /// like theta0^2 (Hertz) to theta0^5 (thin layer), u0 like theta0^2;
     /// the bounds only catch a secant through two nearly equal points.
-    constexpr double min_slope = 0.5, max_slope = 10., default_slope = 3.;
+    constexpr double min_slope = 0.5, max_slope = 10.;
+    /// The slope assumed while one nip has converged: between Hertz and
+    /// the thin layer for P, the geometric overlap for u0.
+    constexpr double default_slope_load = 3., default_slope_indentation = 2.;
 
     /// A theta0 this close above a converged one that still fails means
     /// the cover cannot carry more.
@@ -68,6 +71,8 @@ namespace rollnip
       return std::abs(std::log(a.q / target)) <
              std::abs(std::log(b.q / target));
     });
+    const double default_slope =
+      by_load ? default_slope_load : default_slope_indentation;
     double slope = default_slope;
     if (near.size() > 1 && near[0].theta != near[1].theta)
       slope = std::log(near[0].q / near[1].q) /
@@ -76,6 +81,48 @@ namespace rollnip
       slope = default_slope;
     slope = std::clamp(slope, min_slope, max_slope);
     return near[0].theta * std::pow(target / near[0].q, 1. / slope);
+  }
+
+  double
+  NipControl::predict(const double target) const
+  {
+    Assert(!converged.empty(), ExcInternalError());
+    std::vector<Point> near = converged;
+    std::sort(near.begin(), near.end(), [target](const auto &a, const auto &b) {
+      return std::abs(std::log(a.q / target)) <
+             std::abs(std::log(b.q / target));
+    });
+    // The nearest nip, and up to two more whose q differ from those taken
+    // by a good part of the distance to the target: the iterates of an
+    // earlier target lie too close together to give a curvature.
+    const double       reach = std::abs(std::log(target / near[0].q));
+    std::vector<Point> nodes = {near[0]};
+    for (std::size_t i = 1; i < near.size() && nodes.size() < 3; ++i)
+      if (std::all_of(nodes.begin(), nodes.end(), [&](const Point &n) {
+            return std::abs(std::log(near[i].q / n.q)) > 0.3 * reach;
+          }))
+        nodes.push_back(near[i]);
+    if (nodes.size() < 3)
+      return secant_guess(target);
+    // Inverse quadratic interpolation: log theta0 as a quadratic in log q.
+    const double x     = std::log(target);
+    double       log_t = 0;
+    for (std::size_t a = 0; a < 3; ++a)
+      {
+        double l = 1;
+        for (std::size_t b = 0; b < 3; ++b)
+          if (b != a)
+            l *= (x - std::log(nodes[b].q)) /
+                 (std::log(nodes[a].q) - std::log(nodes[b].q));
+        log_t += l * std::log(nodes[a].theta);
+      }
+    const double theta = std::exp(log_t);
+    // Far outside its nodes a quadratic may turn over: then the power law.
+    const double power_law = secant_guess(target);
+    return std::isfinite(theta) && theta > 0.5 * power_law &&
+               theta < 2 * power_law
+             ? theta
+             : power_law;
   }
 
   ContactResult
@@ -112,9 +159,8 @@ namespace rollnip
       return r;
     };
 
-    double theta =
-      converged.empty() ? first_guess(target) : secant_guess(target);
-    theta                   = std::min(theta, theta_max);
+    double theta = converged.empty() ? first_guess(target) : predict(target);
+    theta        = std::min(theta, theta_max);
     double        failed_at = std::numeric_limits<double>::max();
     ContactResult r;
     for (unsigned int it = 1; it <= c.max_iterations; ++it)
@@ -171,7 +217,7 @@ namespace rollnip
             lo = std::max(lo, p.theta);
           else
             hi = std::min(hi, p.theta);
-        double next = std::clamp(secant_guess(target), 0.5 * theta, 2 * theta);
+        double next = std::clamp(predict(target), 0.5 * theta, 2 * theta);
         if (!(next > lo && next < hi))
           next = lo > 0 ? 0.5 * (lo + hi) : 0.5 * hi;
         theta = std::min(next, theta_max);

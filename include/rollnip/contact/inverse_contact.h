@@ -79,6 +79,10 @@ namespace rollnip
     const Indenter                   indenter;
     std::vector<SurfaceNode>         nodes;
     ConditionalOStream               pcout;
+    /// Contact/Conformity tolerance, and under load or indentation control
+    /// at most a tenth of Contact/Control tolerance: the nip's P and u0
+    /// carry the conformity error, and the control must see past it.
+    const double conformity_tolerance;
     /// The pressure of the problem's current state (empty before the
     /// first solve) and its theta0: the next solve starts from them.
     std::function<double(double)> applied_pressure;

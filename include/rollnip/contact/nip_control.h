@@ -14,8 +14,9 @@ namespace rollnip
    * P or has the target u0. On the nip-fitted mesh q(theta0) (q = P or u0)
    * is smooth and rising, close to a power law, so a secant iteration on
    * log q against log theta0 converges in a few contact solves:
-   *  - it starts from the power law through the two converged nips of
-   *    the sweep closest to the target, or, for the first nip, from a
+   *  - it starts from the inverse quadratic (in log-log) through three
+   *    converged nips of the sweep spread towards the target (the power
+   *    law through two while there are fewer), or, for the first nip, a
    *    guess below the half-width of Hertz and of the thin layer (both
    *    softer than a bonded layer, so both too wide);
    *  - a contact solve that fails is stepped back from, halfway to the
@@ -53,6 +54,13 @@ namespace rollnip
     /// The first theta0 to try for @p target.
     double
     first_guess(const double target) const;
+
+    /// The first theta0 to try for @p target once nips have converged:
+    /// the inverse quadratic (log theta0 in log q) through three of them
+    /// spread over the way to the target, or the power law of
+    /// secant_guess() while there are fewer.
+    double
+    predict(const double target) const;
 
     /// The power-law (secant) estimate of theta0 for @p target from the
     /// two converged nips whose q are closest to it.
