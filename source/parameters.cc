@@ -3,6 +3,7 @@
 #include <rollnip/loading/pressure_load.h>
 #include <rollnip/parameters.h>
 
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -48,6 +49,19 @@ namespace rollnip
       }
 
       constexpr double degree = numbers::PI / 180.;
+      /// Defaults of the contact keys that only a contact scene reads.
+      const char *const default_values          = "8";
+      const char *const default_indenter_radius = "76.2";
+
+      /// A value for a message, in the shortest form (1e+300, not 300
+      /// digits).
+      std::string
+      number(const double x)
+      {
+        std::ostringstream s;
+        s << x;
+        return s.str();
+      }
     } // namespace
 
     std::string
@@ -430,7 +444,7 @@ namespace rollnip
         prm,
         "Maximum line search steps",
         "6",
-        Patterns::Integer(0),
+        Patterns::Integer(0, 60),
         "Halvings of the Newton step tried by the line search");
       declare_documented(prm,
                          "Verbose",
@@ -567,14 +581,14 @@ namespace rollnip
                          "(P given) or indentation (u0 given)");
       declare_documented(prm,
                          "Values",
-                         "8",
+                         default_values,
                          Patterns::List(Patterns::Double(0.), 1),
                          "The controlled quantity, one nip per value, "
                          "comma-separated (several make a sweep): theta0 "
                          "[deg], P [N/mm, two-sided] or u0 [mm] by Mode");
       declare_documented(prm,
                          "Indenter radius",
-                         "76.2",
+                         default_indenter_radius,
                          Patterns::Anything(),
                          "Rbar, radius of the rigid indenter [mm]; 'inf' for "
                          "a flat rigid plane (two equal rolls by symmetry)");
@@ -620,6 +634,11 @@ namespace rollnip
         values.push_back(std::stod(v) *
                          (mode == ContactMode::nip_angle ? degree : 1.));
       const std::string r = prm.get("Indenter radius");
+      keys_set_without_mode =
+        mode == ContactMode::none &&
+        (Utilities::split_string_list(prm.get("Values")) !=
+           std::vector<std::string>{default_values} ||
+         r != default_indenter_radius);
       if (r == "inf" || r == "infinity")
         indenter_radius = std::numeric_limits<double>::infinity();
       else
@@ -759,6 +778,10 @@ namespace rollnip
         AssertThrow(in.good(),
                     ExcMessage("parameter file '" + filename +
                                "' cannot be opened"));
+        // A directory opens as an empty stream: the default scene would run.
+        AssertThrow(std::filesystem::is_regular_file(filename),
+                    ExcMessage("parameter file '" + filename +
+                               "' is not a regular file (a directory?)"));
       }
       ParameterHandler prm;
       declare(prm);
@@ -792,8 +815,7 @@ namespace rollnip
                     geometry.sector_angle <= numbers::PI * (1 + 1e-12),
                   ExcMessage("Geometry/Sector angle must lie in (0, 180] deg, "
                              "got " +
-                             std::to_string(geometry.sector_angle / degree) +
-                             " deg"));
+                             number(geometry.sector_angle / degree) + " deg"));
       AssertThrow(material.C1 + material.C2 > 0,
                   ExcMessage("Material/C1 + C2 must be positive (shear "
                              "modulus 2 (C1 + C2)), got C1 = " +
@@ -807,15 +829,48 @@ namespace rollnip
       AssertThrow(mesh.source == MeshSource::builtin || !mesh.mesh_file.empty(),
                   ExcMessage("Mesh/Mesh file must name a gmsh file when "
                              "Mesh/Source = gmsh"));
-      // The load expression must parse; constructing the load checks it.
+      const double G = 2 * (material.C1 + material.C2);
+      AssertThrow(G >= 1e-6 && G <= 1e9,
+                  ExcMessage("Material/C1 + C2: the shear modulus 2 (C1 + C2) "
+                             "= " +
+                             number(G) +
+                             " MPa is outside 1e-6 to 1e9 MPa (a unit "
+                             "mistake? C1 and C2 are in MPa)"));
+      // The load expression must parse and be finite on the whole arc.
       PressureLoad check(load, geometry);
-      (void)check;
+      check.check_finite();
+      AssertThrow(!contact.keys_set_without_mode,
+                  ExcMessage("Contact/Values or Contact/Indenter radius is "
+                             "set but Contact/Mode = none, so they would be "
+                             "ignored: set Mode (nip angle, load or "
+                             "indentation) or remove them"));
+      if (contact.mode == ContactMode::none &&
+          load.pressure_function.find("theta0") != std::string::npos)
+        AssertThrow(load.theta0 <= geometry.sector_angle * (1 + 1e-12),
+                    ExcMessage("Load/theta0 (" + number(load.theta0 / degree) +
+                               " deg) reaches beyond Geometry/Sector angle (" +
+                               number(geometry.sector_angle / degree) +
+                               " deg): the load beyond the sector would be "
+                               "dropped"));
       if (contact.mode != ContactMode::none)
         {
           AssertThrow(boundary_conditions.condition[BoundaryIds::outer_arc] ==
                         BoundaryCondition::pressure,
                       ExcMessage("Contact/Mode needs Boundary conditions/Outer "
                                  "arc (id 1) = pressure"));
+          // The inverse iteration mirrors the nip about the line of centres.
+          AssertThrow(
+            boundary_conditions.condition[BoundaryIds::symmetry_edge] ==
+              BoundaryCondition::symmetry,
+            ExcMessage("Contact/Mode needs Boundary conditions/Symmetry edge "
+                       "(id 2) = symmetry: the contact iteration takes the "
+                       "line of centres as a symmetry line"));
+          AssertThrow(std::isinf(contact.indenter_radius) ||
+                        contact.indenter_radius <= 1e6 * R0,
+                      ExcMessage("Contact/Indenter radius = " +
+                                 number(contact.indenter_radius) +
+                                 " mm is more than 1e6 times the roll's: "
+                                 "write 'inf' for a flat indenter"));
           for (const double v : contact.values)
             AssertThrow(v > 0 && (contact.mode != ContactMode::nip_angle ||
                                   v < geometry.sector_angle),
@@ -858,6 +913,10 @@ namespace rollnip
         }
       AssertThrow(!output.directory.empty(),
                   ExcMessage("Output/Directory must not be empty"));
+      AssertThrow(!std::filesystem::exists(output.directory) ||
+                    std::filesystem::is_directory(output.directory),
+                  ExcMessage("Output/Directory '" + output.directory +
+                             "' exists and is not a directory"));
     }
 
     bool

@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <rollnip/run_errors.h>
 
 #include <cctype>
@@ -36,6 +38,34 @@ namespace rollnip
     return line;
   }
 
+  namespace
+  {
+    bool local_errors = false;
+
+    int
+    report(const bool root, const std::string &message)
+    {
+      const unsigned int n =
+        dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+      if (local_errors && n > 1)
+        {
+          std::cerr << "rollnip: error: " << message << " (on MPI process "
+                    << dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD)
+                    << " of " << n << "; ending all processes)" << std::endl;
+          MPI_Abort(MPI_COMM_WORLD, 1);
+        }
+      if (root)
+        std::cerr << "rollnip: error: " << message << std::endl;
+      return 1;
+    }
+  } // namespace
+
+  void
+  errors_may_be_local()
+  {
+    local_errors = true;
+  }
+
   int
   run_guarded(const bool root, const std::function<int()> &body)
   {
@@ -45,15 +75,11 @@ namespace rollnip
       }
     catch (const std::exception &e)
       {
-        if (root)
-          std::cerr << "rollnip: error: " << one_line_message(e) << std::endl;
-        return 1;
+        return report(root, one_line_message(e));
       }
     catch (...)
       {
-        if (root)
-          std::cerr << "rollnip: error: unknown exception" << std::endl;
-        return 1;
+        return report(root, "unknown exception");
       }
   }
 } // namespace rollnip

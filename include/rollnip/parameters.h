@@ -226,6 +226,9 @@ namespace rollnip
       double              control_tolerance; ///< relative, on P or u0
       unsigned int        max_iterations;
       bool                compare_linear;
+      /// Contact/Values or Indenter radius differ from their defaults:
+      /// with Mode = none they would be silently ignored.
+      bool keys_set_without_mode = false;
 
       static void
       declare(ParameterHandler &prm);

@@ -17,10 +17,20 @@ namespace rollnip
 
   /**
    * Runs @p body and turns any exception into "rollnip: error: ..." on
-   * standard error (rank 0 only) and exit code 1.
+   * standard error and exit code 1. Until errors_may_be_local() is called,
+   * every process meets the same errors (reading and checking the input),
+   * so rank 0 speaks and all return. After it, one process may fail while
+   * the others wait in a collective call: with more than one process the
+   * failing one prints the message and ends all of them (MPI_Abort), so
+   * that a run never hangs.
    */
   int
   run_guarded(const bool root, const std::function<int()> &body);
+
+  /// From now on an error may be met by one process alone (see
+  /// run_guarded()); called once the mesh is set up.
+  void
+  errors_may_be_local();
 } // namespace rollnip
 
 #endif

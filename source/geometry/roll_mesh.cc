@@ -119,6 +119,14 @@ namespace rollnip
                         "Mesh/Mesh file: '" + file +
                         "' is not a readable gmsh quadrilateral mesh"));
         }
+      // Q1-P0 and the polar manifold need quadrilaterals; a triangle (or
+      // mixed) mesh would crash the first face loop.
+      AssertThrow(coarse.n_active_cells() > 0 &&
+                    coarse.all_reference_cells_are_hyper_cube(),
+                  ExcMessage("Mesh/Mesh file: '" + file +
+                             "' contains triangles (or no cells); rollnip "
+                             "needs a quadrilateral mesh (in gmsh: Recombine "
+                             "Surface, or Mesh.RecombineAll = 1)"));
       // Arcs follow the circles under refinement; the interior stays flat.
       for (const auto &cell : coarse.active_cell_iterators())
         for (const auto &face : cell->face_iterators())
@@ -128,8 +136,19 @@ namespace rollnip
             face->set_manifold_id(ManifoldIds::polar);
     }
 
-    /// The mesh must carry exactly the ids 0..3 and its arcs must lie on
-    /// the circles of Geometry.
+    /// Distance [mm] of @p x from the ray from the origin at angle @p a
+    /// (to the origin itself behind it).
+    double
+    distance_from_ray(const Point<dim> &x, const double a)
+    {
+      const Tensor<1, dim> d({std::cos(a), std::sin(a)});
+      const double         along = x * d;
+      return along >= 0 ? std::abs(x[0] * d[1] - x[1] * d[0]) : x.norm();
+    }
+
+    /// The mesh must carry exactly the ids 0..3, its arcs must lie on the
+    /// circles of Geometry and its edges on the rays theta = 0 and the
+    /// sector angle, so that every condition acts where it says.
     void
     check_mesh(const Parameters::AllParameters &parameters,
                const Triangulation<dim>        &coarse,
@@ -139,6 +158,10 @@ namespace rollnip
       const double                 R[2]  = {parameters.geometry.inner_radius,
                                             parameters.geometry.outer_radius};
       double                       worst = 0;
+      // Largest distance of the symmetry edge (id 2) from the ray
+      // theta = 0 and of the far edge (id 3) from theta = sector angle.
+      double       edge_distance[2] = {0, 0};
+      const double sector           = parameters.geometry.sector_angle;
       for (const auto &cell : coarse.active_cell_iterators())
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary())
@@ -155,6 +178,15 @@ namespace rollnip
                   worst =
                     std::max(worst,
                              std::abs(face->vertex(v).norm() - R[b]) / R[b]);
+              else
+                for (unsigned int v = 0; v < 2; ++v)
+                  edge_distance[b - BoundaryIds::symmetry_edge] =
+                    std::max(edge_distance[b - BoundaryIds::symmetry_edge],
+                             distance_from_ray(face->vertex(v),
+                                               b == BoundaryIds::symmetry_edge
+                                                 ? 0.
+                                                 : sector) /
+                               R[1]);
             }
       for (types::boundary_id b = 0; b < BoundaryIds::n_boundaries; ++b)
         AssertThrow(found.count(b),
@@ -168,6 +200,20 @@ namespace rollnip
                              "Geometry/Inner radius and Outer radius (relative "
                              "mismatch " +
                              std::to_string(worst) + ")"));
+      const std::string edge_names[2] = {"symmetry edge (id 2) does not lie "
+                                         "on the ray theta = 0",
+                                         "far edge (id 3) does not lie on the "
+                                         "ray theta = Geometry/Sector angle (" +
+                                           std::to_string(sector * 180. /
+                                                          numbers::PI) +
+                                           " deg)"};
+      for (unsigned int e = 0; e < 2; ++e)
+        AssertThrow(edge_distance[e] < 1e-6,
+                    ExcMessage(origin + ": the " + edge_names[e] +
+                               " (relative distance " +
+                               std::to_string(edge_distance[e]) +
+                               "); are the ids swapped, or is the mesh drawn "
+                               "for another sector?"));
     }
   } // namespace
 

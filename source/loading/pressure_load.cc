@@ -2,14 +2,19 @@
 
 #include <rollnip/loading/pressure_load.h>
 
+#include <cmath>
+#include <iomanip>
 #include <iostream>
 #include <map>
+#include <sstream>
 
 namespace rollnip
 {
   PressureLoad::PressureLoad(const Parameters::Load     &load,
                              const Parameters::Geometry &geometry)
       : function(std::make_unique<FunctionParser<1>>(1))
+      , sector_angle(geometry.sector_angle)
+      , outer_radius(geometry.outer_radius)
   {
     const std::map<std::string, double> constants = {
       {"p0", load.p0},
@@ -48,5 +53,71 @@ namespace rollnip
   PressureLoad::value(const double theta) const
   {
     return function->value(Point<1>(theta));
+  }
+
+  std::vector<double>
+  PressureLoad::samples() const
+  {
+    const double        step = 0.01 * numbers::PI / 180;
+    const unsigned int  n    = std::ceil(sector_angle / step);
+    std::vector<double> theta(n + 1);
+    for (unsigned int i = 0; i <= n; ++i)
+      theta[i] = sector_angle * i / n;
+    return theta;
+  }
+
+  void
+  PressureLoad::check_finite() const
+  {
+    for (const double theta : samples())
+      {
+        const double f = value(theta);
+        if (!std::isfinite(f))
+          {
+            std::ostringstream s;
+            s << "Load/Pressure function is " << f
+              << " at theta = " << theta * 180 / numbers::PI
+              << " deg (theta is the reference angle in rad): the load must "
+                 "be finite on the whole arc, including beyond the nip";
+            AssertThrow(false, ExcMessage(s.str()));
+          }
+      }
+  }
+
+  std::string
+  PressureLoad::describe() const
+  {
+    const std::vector<double> theta = samples();
+    double first = -1, last = -1, peak = 0, peak_at = 0, fx = 0, fy = 0;
+    for (unsigned int i = 0; i < theta.size(); ++i)
+      {
+        const double f = value(theta[i]);
+        if (f != 0)
+          {
+            first = first < 0 ? theta[i] : first;
+            last  = theta[i];
+          }
+        if (std::abs(f) > std::abs(peak))
+          {
+            peak    = f;
+            peak_at = theta[i];
+          }
+        // Trapezoidal rule; the pressure pushes along -N on the arc.
+        const double w = (i == 0 || i + 1 == theta.size() ? 0.5 : 1.) *
+                         (theta[1] - theta[0]) * outer_radius;
+        fx -= w * f * std::cos(theta[i]);
+        fy -= w * f * std::sin(theta[i]);
+      }
+    const double       deg = 180 / numbers::PI;
+    std::ostringstream s;
+    s << std::setprecision(4);
+    if (first < 0)
+      s << "Load: the pressure is zero on the whole outer arc";
+    else
+      s << "Load: pressure non-zero for theta in [" << first * deg << ", "
+        << last * deg << "] deg, peak " << peak << " MPa at " << peak_at * deg
+        << " deg; resultant on the undeformed arc (" << fx << ", " << fy
+        << ") N/mm";
+    return s.str();
   }
 } // namespace rollnip

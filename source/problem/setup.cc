@@ -13,6 +13,7 @@
 #include <rollnip/geometry/roll_mesh.h>
 #include <rollnip/loading/pressure_load.h>
 #include <rollnip/problem.h>
+#include <rollnip/run_errors.h>
 
 #include <cmath>
 
@@ -141,6 +142,12 @@ namespace rollnip
           << dof_handler.n_dofs() << " DoFs (" << fe->get_name() << "), "
           << Utilities::MPI::n_mpi_processes(mpi_communicator)
           << " MPI process(es)" << std::endl;
+    if (parameters.contact.mode == Parameters::ContactMode::none &&
+        parameters.boundary_conditions.condition[BoundaryIds::outer_arc] ==
+          Parameters::BoundaryCondition::pressure)
+      pcout << PressureLoad(parameters.load, parameters.geometry).describe()
+            << std::endl;
+    errors_may_be_local();
   }
 
   double

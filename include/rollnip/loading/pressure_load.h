@@ -6,6 +6,8 @@
 #include <rollnip/parameters.h>
 
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace rollnip
 {
@@ -25,8 +27,25 @@ namespace rollnip
     double
     value(const double theta) const;
 
+    /// Throws a one-line message naming Load/Pressure function and the
+    /// angle if f is NaN or infinite anywhere on [0, sector angle]
+    /// (sampled at 0.01 deg and at the ends).
+    void
+    check_finite() const;
+
+    /// Where f is non-zero on [0, sector angle], its peak and its
+    /// resultant on the undeformed outer arc, as one line for the screen:
+    /// an expression written in degrees shows as a load on the whole arc.
+    std::string
+    describe() const;
+
   private:
     std::unique_ptr<FunctionParser<1>> function;
+    const double                       sector_angle;
+    const double                       outer_radius;
+    /// The sample angles [rad] of check_finite() and describe().
+    std::vector<double>
+    samples() const;
   };
 } // namespace rollnip
 
