@@ -2,6 +2,7 @@
 
 #include <rollnip/contact/nip_study.h>
 #include <rollnip/geometry/adaptive_grading.h>
+#include <rollnip/interrupt.h>
 #include <rollnip/parameters.h>
 #include <rollnip/problem.h>
 #include <rollnip/run_errors.h>
@@ -92,6 +93,7 @@ main(int argc, char **argv)
       return 1;
     }
 
+  install_interrupt_handlers();
   return run_guarded(root, [&]() {
     Parameters::AllParameters parameters;
     parameters.read(file);

@@ -1,5 +1,6 @@
 #include <deal.II/base/numbers.h>
 
+#include <rollnip/cost_estimate.h>
 #include <rollnip/loading/pressure_load.h>
 #include <rollnip/parameters.h>
 
@@ -595,14 +596,14 @@ namespace rollnip
       declare_documented(prm,
                          "Conformity tolerance",
                          "1e-6",
-                         Patterns::Double(0.),
+                         Patterns::Double(0., 0.1),
                          "Largest distance of a contact-zone surface node "
                          "from the indenter, as a fraction of the "
                          "indentation u0 (the paper accepted 1e-2)");
       declare_documented(prm,
                          "Control tolerance",
                          "1e-6",
-                         Patterns::Double(0.),
+                         Patterns::Double(0., 0.1),
                          "Relative tolerance on P or u0 for Mode = load or "
                          "indentation");
       declare_documented(prm,
@@ -631,8 +632,20 @@ namespace rollnip
                                                  : ContactMode::none;
       values.clear();
       for (const auto &v : Utilities::split_string_list(prm.get("Values")))
-        values.push_back(std::stod(v) *
-                         (mode == ContactMode::nip_angle ? degree : 1.));
+        {
+          double x = 0;
+          try
+            {
+              x = std::stod(v);
+            }
+          catch (...) // out of range: denormal or beyond double
+            {
+              AssertThrow(false,
+                          ExcMessage("Contact/Values: '" + v +
+                                     "' is not a representable number"));
+            }
+          values.push_back(x * (mode == ContactMode::nip_angle ? degree : 1.));
+        }
       const std::string r = prm.get("Indenter radius");
       keys_set_without_mode =
         mode == ContactMode::none &&
@@ -913,6 +926,14 @@ namespace rollnip
         }
       AssertThrow(!output.directory.empty(),
                   ExcMessage("Output/Directory must not be empty"));
+      AssertThrow(contact.values.size() <= max_nips_per_run,
+                  ExcMessage("Contact/Values has " +
+                             std::to_string(contact.values.size()) +
+                             " values; one run takes at most " +
+                             std::to_string(max_nips_per_run) +
+                             " (each is at least one full contact solve)"));
+      if (mesh.source == MeshSource::builtin)
+        check_cost(*this, mesh.radial_cells * mesh.circumferential_cells);
       AssertThrow(!std::filesystem::exists(output.directory) ||
                     std::filesystem::is_directory(output.directory),
                   ExcMessage("Output/Directory '" + output.directory +

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <rollnip/contact/nip_control.h>
+#include <rollnip/interrupt.h>
 
 #include <algorithm>
 #include <cmath>
@@ -165,6 +166,12 @@ namespace rollnip
     ContactResult r;
     for (unsigned int it = 1; it <= c.max_iterations; ++it)
       {
+        if (it > 1 && interrupt_requested(MPI_COMM_WORLD))
+          {
+            r.converged = false;
+            r.message   = interrupt_message();
+            return r;
+          }
         ++n_solves;
         r            = contact.solve(theta);
         double below = 0; // the largest converged theta0 under theta

@@ -3,6 +3,7 @@
 #include <rollnip/boundary_ids.h>
 #include <rollnip/contact/nip_control.h>
 #include <rollnip/contact/nip_study.h>
+#include <rollnip/interrupt.h>
 #include <rollnip/output/atomic_file.h>
 
 #include <algorithm>
@@ -131,6 +132,12 @@ namespace rollnip
             if (!row.nonlinear.converged)
               {
                 failure = row.nonlinear.message;
+                if (interrupt_requested(MPI_COMM_WORLD))
+                  failure = interrupt_message() + " during nip " +
+                            std::to_string(n + 1) + " of " +
+                            std::to_string(values.size()) + "; " +
+                            std::to_string(rows.size()) +
+                            " converged nip(s) are in nip_characteristic.csv";
                 break;
               }
 

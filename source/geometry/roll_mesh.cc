@@ -5,6 +5,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <rollnip/boundary_ids.h>
+#include <rollnip/cost_estimate.h>
 #include <rollnip/geometry/roll_mesh.h>
 
 #include <cmath>
@@ -234,6 +235,7 @@ namespace rollnip
         make_builtin(parameters, coarse);
         check_mesh(parameters, coarse, "built-in mesh");
       }
+    check_cost(parameters, coarse.n_active_cells());
     triangulation.copy_triangulation(coarse);
     triangulation.set_manifold(ManifoldIds::polar,
                                PolarManifold<dim>(Point<dim>()));

@@ -1,6 +1,7 @@
 #include <deal.II/base/function_parser.h>
 
 #include <rollnip/loading/pressure_load.h>
+#include <rollnip/output/silence_cerr.h>
 
 #include <cmath>
 #include <iomanip>
@@ -24,14 +25,7 @@ namespace rollnip
       {"pi", numbers::PI}};
     // muparser's diagnostics go to std::cerr; the message below replaces
     // them with one line.
-    struct SilenceCerr
-    {
-      std::streambuf *saved = std::cerr.rdbuf(nullptr);
-      ~SilenceCerr()
-      {
-        std::cerr.rdbuf(saved);
-      }
-    } silence;
+    const SilenceCerr silence;
     try
       {
         function->initialize("theta", load.pressure_function, constants);

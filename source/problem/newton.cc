@@ -1,6 +1,7 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
 
+#include <rollnip/interrupt.h>
 #include <rollnip/problem.h>
 
 #include <cmath>
@@ -9,6 +10,35 @@
 
 namespace rollnip
 {
+  namespace
+  {
+    /// Cut-backs between two looks at the load fraction's progress.
+    constexpr unsigned int stall_window = 20;
+    /// The least progress per window, as a fraction of the load still to
+    /// go, for the load stepping to carry on.
+    constexpr double stall_progress = 1e-2;
+
+    /// Notices a load fraction that stops growing over many cut-backs
+    /// (each success is followed by a failure once the increment grows
+    /// again), which would otherwise step for ever.
+    struct StallGuard
+    {
+      unsigned int n_cutbacks   = 0;
+      double       window_start = 0;
+
+      bool
+      stalled(const double lambda)
+      {
+        if (++n_cutbacks % stall_window != 0)
+          return false;
+        const bool stalled =
+          lambda - window_start < stall_progress * (1 - window_start);
+        window_start = lambda;
+        return stalled;
+      }
+    };
+  } // namespace
+
   double
   RollProblem::pressure_part_norm(const TrilinosWrappers::MPI::Vector &v) const
   {
@@ -203,6 +233,7 @@ namespace rollnip
                              : first_increment > 0 ? first_increment
                                                    : 1. / ls.n_initial_steps;
     unsigned int step = 0, cutbacks_in_a_row = 0;
+    StallGuard   stall;
     // The converged state before the current one, for the predictor.
     TrilinosWrappers::MPI::Vector previous(solution);
     double                        previous_lambda = -1;
@@ -220,6 +251,11 @@ namespace rollnip
             << std::endl;
     while (lambda < 1. - 1e-12)
       {
+        if (interrupt_requested(mpi_communicator))
+          {
+            status.message = interrupt_message();
+            break;
+          }
         const double target = std::min(1., lambda + increment);
         // Predictor: u(target) ~ u + (target - lambda) du/dlambda.
         const TrilinosWrappers::MPI::Vector converged(solution);
@@ -279,6 +315,16 @@ namespace rollnip
             ++cutbacks_in_a_row;
             increment *= 0.5;
             std::ostringstream msg;
+            if (stall.stalled(lambda))
+              {
+                msg << "the load cannot be reached: the load fraction stalls "
+                       "at "
+                    << lambda << " (less than " << 100 * stall_progress
+                    << " % of the remaining load gained over the last "
+                    << stall_window << " cut-backs)";
+                status.message = msg.str();
+                break;
+              }
             if (cutbacks_in_a_row > ls.max_cutbacks ||
                 increment < ls.min_increment)
               {

@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <rollnip/output/silence_cerr.h>
 #include <rollnip/solvers/sparse_direct.h>
 
 #include <Amesos.h>
@@ -43,6 +44,9 @@ namespace rollnip
   {
     const Epetra_CrsMatrix *A = &matrix.trilinos_matrix();
     ++n_factorisations;
+    // Amesos_Mumps reports INFOG(1) = -9 (workspace too small) on std::cerr
+    // before the retry below succeeds; a failure for good is thrown.
+    const SilenceCerr silence;
     // A numeric failure with the current analysis is retried only with
     // more workspace than that analysis had.
     const bool numeric_failure = A == analysed_matrix && solver;

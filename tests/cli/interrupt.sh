@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# SIGINT during a sweep: the run stops at the next load step, writes the
+# nips that converged (nip_characteristic.csv whole, with one row each)
+# and exits 1 with one line saying where it stopped.
+#
+# Usage: bash interrupt.sh ROLLNIP LOAD_PRM
+#   LOAD_PRM  parameters/load_controlled.prm (a load-controlled sweep)
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+
+[ $# -eq 2 ] || fail "usage: interrupt.sh ROLLNIP LOAD_PRM"
+rollnip="$1"
+scene="$2"
+require_executable rollnip "$rollnip"
+[ -f "$scene" ] || fail "parameter file '$scene' not found"
+start_test interrupt
+
+cp "$scene" run.prm
+cat >> run.prm <<PRM
+
+# --- overrides of tests/cli/interrupt.sh: many targets, a small mesh
+subsection Mesh
+  set Global refinements = 1
+end
+subsection Contact
+  set Values = $(seq -s ', ' 2 2 60)
+  set Compare with linear theory = false
+end
+subsection Output
+  set Directory = out
+  set Write VTU = false
+  set Print timing = false
+end
+PRM
+
+"$rollnip" run.prm > stdout.txt 2> stderr.txt &
+pid=$!
+# Wait for the second nip, then interrupt the third or a later one.
+for _ in $(seq 1 600); do
+  if grep -q '^Nip 2: P from' stdout.txt; then break; fi
+  kill -0 "$pid" 2> /dev/null || break
+  sleep 0.1
+done
+grep -q '^Nip 2: P from' stdout.txt || { cat stdout.txt stderr.txt; fail "the sweep did not reach nip 2"; }
+kill -INT "$pid"
+rc=0
+wait "$pid" || rc=$?
+echo "--- standard error:"
+cat stderr.txt
+echo "---"
+[ "$rc" -eq 1 ] || fail "exit code $rc, expected 1"
+pass "exit code 1"
+[ "$(wc -l < stderr.txt)" -eq 1 ] || fail "expected one line on standard error"
+line="$(cat stderr.txt)"
+[[ "$line" =~ ^rollnip:\ error:.*interrupted\ by\ SIGINT\ during\ nip\ ([0-9]+)\ of\ 30\;\ ([0-9]+)\ converged ]] ||
+  fail "the error line does not say where the sweep stopped"
+stopped="${BASH_REMATCH[1]}"
+converged="${BASH_REMATCH[2]}"
+pass "stopped during nip $stopped of 30, $converged converged"
+[ "$converged" -eq $((stopped - 1)) ] || fail "converged nips should be $((stopped - 1))"
+[ -f out/nip_characteristic.csv ] || fail "out/nip_characteristic.csv not written"
+rows=$(($(wc -l < out/nip_characteristic.csv) - 1))
+[ "$rows" -eq "$converged" ] ||
+  fail "nip_characteristic.csv has $rows rows, expected $converged"
+pass "nip_characteristic.csv has one row per converged nip ($rows)"
+for n in $(seq 1 "$converged"); do
+  d="out/nip-$(printf %02d "$n")"
+  [ "$(summary_value "$d/summary.txt" status)" = converged ] ||
+    fail "$d/summary.txt is not a converged nip"
+done
+pass "nip-01 .. nip-$(printf %02d "$converged") are converged and whole"
