@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -64,6 +65,13 @@ namespace rollnip
            (outer[i].y - outer[i - 1].y);
     return P; // 2 * (1/2 mean) * dx2
   }
+
+  namespace
+  {
+    /// Relative difference between P from the surface traction and the
+    /// applied P above which a nip is flagged (0.2 % on the default mesh).
+    constexpr double traction_mismatch_warning = 0.05;
+  } // namespace
 
   int
   run_nip_study(const Parameters::AllParameters &parameters,
@@ -156,6 +164,19 @@ namespace rollnip
                   << " N/mm (difference " << std::setprecision(3)
                   << 100 * (row.load_from_traction / row.nonlinear.nip_load - 1)
                   << " %)" << std::endl;
+            // The two agree to a fraction of a per cent on a mesh that
+            // resolves the nip; far apart, the numbers above are not to be
+            // trusted.
+            const double mismatch =
+              std::abs(row.load_from_traction / row.nonlinear.nip_load - 1);
+            if (root && !(mismatch < traction_mismatch_warning))
+              std::cerr << "rollnip: warning: nip " << n + 1
+                        << ": P from the surface stress differs from the "
+                           "applied P by "
+                        << std::setprecision(3) << 100 * mismatch
+                        << " %: the mesh does not resolve this nip (refine "
+                           "it, or check Geometry and Contact/Values)"
+                        << std::endl;
 
             if (linear)
               {
@@ -167,6 +188,11 @@ namespace rollnip
                 ls.message       = "contact: " + row.linear.message;
                 linear->write_results(ls);
                 write_contact_results(row.linear, dir + "/linear");
+                if (!row.linear.converged)
+                  pcout << "Nip " << n + 1
+                        << ": the linear companion did not converge ("
+                        << row.linear.message << "); its columns are nan"
+                        << std::endl;
               }
             rows.push_back(row);
           }
@@ -183,6 +209,12 @@ namespace rollnip
         throw;
       }
 
+    // A linear companion that did not converge has no value to show.
+    auto linear_value = [with_linear](const NipRow &r, const double v) {
+      return !with_linear         ? 0.
+             : r.linear.converged ? v
+                                  : std::numeric_limits<double>::quiet_NaN();
+    };
     // The nip characteristic.
     pcout << std::endl
           << "Nip characteristic (P two-sided per unit length; b = deformed "
@@ -199,7 +231,7 @@ namespace rollnip
             << std::setw(13) << r.nonlinear.peak_pressure << std::setw(13)
             << r.nonlinear.nip_load / (2 * r.nonlinear.half_chord)
             << std::setw(12) << r.max_principal_strain << std::setw(10)
-            << (with_linear ? r.linear.nip_load : 0.) << std::setw(9)
+            << linear_value(r, r.linear.nip_load) << std::setw(9)
             << r.hertz_load << std::setw(8) << r.thin_layer_load << std::endl;
     if (root)
       {
@@ -223,9 +255,9 @@ namespace rollnip
                   << r.bond_sigma_rtheta_max << ',' << r.load_from_traction
                   << ',' << r.nonlinear.conformity << ','
                   << r.nonlinear.penetration << ','
-                  << (with_linear ? r.linear.nip_load : 0.) << ','
-                  << (with_linear ? r.linear.indentation : 0.) << ','
-                  << (with_linear ? r.linear.peak_pressure : 0.) << ','
+                  << linear_value(r, r.linear.nip_load) << ','
+                  << linear_value(r, r.linear.indentation) << ','
+                  << linear_value(r, r.linear.peak_pressure) << ','
                   << r.hertz_load << ',' << r.thin_layer_load << '\n';
           });
       }

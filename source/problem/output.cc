@@ -7,6 +7,7 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <rollnip/boundary_ids.h>
+#include <rollnip/loading/pressure_load.h>
 #include <rollnip/output/atomic_file.h>
 #include <rollnip/postprocess/stress_postprocessor.h>
 #include <rollnip/problem.h>
@@ -255,6 +256,17 @@ namespace rollnip
     };
     const auto &e = data.extremes;
 
+    // Where the applied pressure acts (pressure scenes): an expression in
+    // degrees shows as a load on the whole arc.
+    auto applied_pressure_line = [&]() -> std::string {
+      if (parameters.contact.mode != Parameters::ContactMode::none ||
+          parameters.boundary_conditions.condition[BoundaryIds::outer_arc] !=
+            Parameters::BoundaryCondition::pressure)
+        return "";
+      const std::string d =
+        PressureLoad(parameters.load, parameters.geometry).describe();
+      return "applied_pressure = " + d.substr(d.find(':') + 2) + '\n';
+    };
     write_atomically(output_directory + "/summary.txt", [&](std::ostream &out) {
       out << std::setprecision(8);
       out << "# rollnip summary (lengths mm, stresses MPa, loads N/mm)\n";
@@ -283,7 +295,7 @@ namespace rollnip
           << "load_resultant_x_N_per_mm = " << R[0] << '\n'
           << "load_resultant_y_N_per_mm = " << R[1] << '\n'
           << "nip_load_P_N_per_mm = " << (two_sided ? -2. : -1.) * R[0] << '\n'
-          << "u_r_at_R0_0_mm = " << u_r << '\n'
+          << applied_pressure_line() << "u_r_at_R0_0_mm = " << u_r << '\n'
           << "indentation_u0_mm = " << -u_r << '\n'
           << "peak_applied_pressure_MPa = " << peak_applied << '\n'
           << "peak_normal_pressure_from_stress_MPa = " << peak_normal << '\n'
