@@ -806,6 +806,15 @@ namespace rollnip
     void
     AllParameters::validate() const
     {
+      validate_scene();
+      validate_contact();
+      validate_mesh();
+      validate_output();
+    }
+
+    void
+    AllParameters::validate_scene() const
+    {
       const double R1 = geometry.inner_radius;
       const double R0 = geometry.outer_radius;
       AssertThrow(mesh.adaptive_passes == 0 ||
@@ -865,6 +874,12 @@ namespace rollnip
                                number(geometry.sector_angle / degree) +
                                " deg): the load beyond the sector would be "
                                "dropped"));
+    }
+
+    void
+    AllParameters::validate_contact() const
+    {
+      const double R0 = geometry.outer_radius;
       if (contact.mode != ContactMode::none)
         {
           AssertThrow(boundary_conditions.condition[BoundaryIds::outer_arc] ==
@@ -891,6 +906,11 @@ namespace rollnip
                                    "positive (and, for nip angles, below "
                                    "Geometry/Sector angle)"));
         }
+    }
+
+    void
+    AllParameters::validate_mesh() const
+    {
       if (mesh.nip_fitting == NipFitting::on)
         {
           AssertThrow(mesh.source == MeshSource::builtin,
@@ -924,6 +944,11 @@ namespace rollnip
                   std::to_string(0.5 * geometry.sector_angle / degree) +
                   " deg), got " + std::to_string(v / degree) + " deg"));
         }
+    }
+
+    void
+    AllParameters::validate_output() const
+    {
       AssertThrow(!output.directory.empty(),
                   ExcMessage("Output/Directory must not be empty"));
       AssertThrow(contact.values.size() <= max_nips_per_run,

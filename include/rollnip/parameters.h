@@ -288,6 +288,18 @@ namespace rollnip
        */
       void
       validate() const;
+      /// Geometry, material and load (validate()).
+      void
+      validate_scene() const;
+      /// A contact scene's conditions and values (validate()).
+      void
+      validate_contact() const;
+      /// Nip fitting against the mesh and the values (validate()).
+      void
+      validate_mesh() const;
+      /// Output directory, the number of nips and the size (validate()).
+      void
+      validate_output() const;
 
       /// Whether the mesh is the nip-fitted one: Mesh/Nip fitting = on, or
       /// automatic for a contact scene on the builtin mesh without

@@ -283,6 +283,17 @@ namespace rollnip
     /// The area of the mesh [mm^2] (for the constraint norm).
     double
     measure_area() const;
+
+    /// The round-off floor of |R_u| [N/mm] (newton.cc): relative to a tiny
+    /// load it can exceed Residual tolerance, so the Newton test adds it
+    /// and any load scale stays reachable.
+    double
+    residual_round_off_floor() const;
+
+    /// The screen line of converged load step @p step at @p lambda, and
+    /// its VTU and surface CSV when asked for every step (newton.cc).
+    void
+    log_step(const unsigned int step, const double lambda, const StepRecord &r);
     bool
     use_iterative_solver() const
     {

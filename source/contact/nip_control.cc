@@ -126,6 +126,25 @@ namespace rollnip
              : power_law;
   }
 
+  double
+  NipControl::next_theta(const double target,
+                         const double theta,
+                         const double upper) const
+  {
+    // The secant (or inverse quadratic), kept inside the bracket of
+    // converged nips around the target and below @p upper.
+    double lo = 0, hi = upper;
+    for (const auto &p : converged)
+      if (p.q < target)
+        lo = std::max(lo, p.theta);
+      else
+        hi = std::min(hi, p.theta);
+    double next = std::clamp(predict(target), 0.5 * theta, 2 * theta);
+    if (!(next > lo && next < hi))
+      next = lo > 0 ? 0.5 * (lo + hi) : 0.5 * hi;
+    return std::min(next, upper);
+  }
+
   ContactResult
   NipControl::solve(const double target)
   {
@@ -216,18 +235,7 @@ namespace rollnip
                                               : "");
             return refuse(r, s.str());
           }
-        // The secant, kept inside the bracket of converged nips around
-        // the target and below a theta0 that failed.
-        double lo = 0, hi = std::min(failed_at, theta_max);
-        for (const auto &p : converged)
-          if (p.q < target)
-            lo = std::max(lo, p.theta);
-          else
-            hi = std::min(hi, p.theta);
-        double next = std::clamp(predict(target), 0.5 * theta, 2 * theta);
-        if (!(next > lo && next < hi))
-          next = lo > 0 ? 0.5 * (lo + hi) : 0.5 * hi;
-        theta = std::min(next, theta_max);
+        theta = next_theta(target, theta, std::min(failed_at, theta_max));
       }
     return refuse(r,
                   "the iteration on theta0 did not reach the control "

@@ -71,6 +71,113 @@ namespace rollnip
     /// Relative difference between P from the surface traction and the
     /// applied P above which a nip is flagged (0.2 % on the default mesh).
     constexpr double traction_mismatch_warning = 0.05;
+
+    /// Fills the postprocessed columns of @p row from the converged nip
+    /// number @p n of @p nonlinear, prints the load check, and flags a
+    /// nip whose check is off (the mesh does not resolve it).
+    void
+    evaluate_nip(const RollProblem               &nonlinear,
+                 const Parameters::AllParameters &parameters,
+                 const unsigned int               n,
+                 NipRow                          &row)
+    {
+      const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      ConditionalOStream pcout(std::cout, root);
+      const double       R = effective_radius(parameters);
+      const double G = 2 * (parameters.material.C1 + parameters.material.C2);
+      const double h =
+        parameters.geometry.outer_radius - parameters.geometry.inner_radius;
+      const SurfaceData data    = nonlinear.surface_data(1.);
+      row.max_principal_strain  = data.extremes.max_principal_stretch - 1;
+      const BondExtremes bond   = bond_extremes(data.bond);
+      row.bond_sigma_rr_min     = bond.sigma_rr_min;
+      row.bond_sigma_rtheta_max = bond.sigma_rtheta_max_abs;
+      row.load_from_traction    = load_from_traction(data.outer);
+      const double b            = row.nonlinear.half_chord;
+      row.hertz_load            = numbers::PI * b * b * 4 * G / (4 * R);
+      row.thin_layer_load       = 2 * G * std::pow(b, 5) / (15 * R * h * h * h);
+      const double difference =
+        row.load_from_traction / row.nonlinear.nip_load - 1;
+      pcout << "Nip " << n << ": P from the applied pressure "
+            << std::setprecision(6) << row.nonlinear.nip_load
+            << " N/mm, from the surface stress " << row.load_from_traction
+            << " N/mm (difference " << std::setprecision(3) << 100 * difference
+            << " %)" << std::endl;
+      // The two agree to a fraction of a per cent on a mesh that resolves
+      // the nip; far apart, the numbers above are not to be trusted.
+      if (root && !(std::abs(difference) < traction_mismatch_warning))
+        std::cerr << "rollnip: warning: nip " << n
+                  << ": P from the surface stress differs from the applied P "
+                     "by "
+                  << std::setprecision(3) << 100 * std::abs(difference)
+                  << " %: the mesh does not resolve this nip (refine it, or "
+                     "check Geometry and Contact/Values)"
+                  << std::endl;
+    }
+
+    /// The nip characteristic on the screen and, whole, as
+    /// @p top/nip_characteristic.csv (collective; rank 0 writes).
+    void
+    write_nip_characteristic(const std::vector<NipRow> &rows,
+                             const bool                 with_linear,
+                             const std::string         &top)
+    {
+      const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      ConditionalOStream pcout(std::cout, root);
+      // A linear companion that did not converge has no value to show.
+      auto linear_value = [with_linear](const NipRow &r, const double v) {
+        return !with_linear         ? 0.
+               : r.linear.converged ? v
+                                    : std::numeric_limits<double>::quiet_NaN();
+      };
+      // The nip characteristic.
+      pcout << std::endl
+            << "Nip characteristic (P two-sided per unit length; b = deformed "
+               "half-chord)"
+            << std::endl
+            << " theta0[deg]    P[N/mm]    u0[mm]   b[mm]  arc[mm]  peak f[MPa]"
+               "  mean f[MPa]  max strain  P_linear  P_Hertz  P_thin"
+            << std::endl;
+      for (const auto &r : rows)
+        pcout << std::fixed << std::setprecision(4) << std::setw(11)
+              << r.nonlinear.theta0 * deg << std::setw(11)
+              << r.nonlinear.nip_load << std::setw(10)
+              << r.nonlinear.indentation << std::setw(8)
+              << r.nonlinear.half_chord << std::setw(9) << r.nonlinear.half_arc
+              << std::setw(13) << r.nonlinear.peak_pressure << std::setw(13)
+              << r.nonlinear.nip_load / (2 * r.nonlinear.half_chord)
+              << std::setw(12) << r.max_principal_strain << std::setw(10)
+              << linear_value(r, r.linear.nip_load) << std::setw(9)
+              << r.hertz_load << std::setw(8) << r.thin_layer_load << std::endl;
+      if (root)
+        {
+          std::filesystem::create_directories(top);
+          write_atomically(
+            top + "/nip_characteristic.csv", [&](std::ostream &out) {
+              out << "theta0_deg,P_N_per_mm,u0_mm,half_chord_mm,half_arc_mm,"
+                     "peak_pressure_MPa,mean_pressure_MPa,max_principal_strain,"
+                     "bond_sigma_rr_min_MPa,bond_sigma_rtheta_max_MPa,"
+                     "P_from_traction_N_per_mm,conformity,penetration,"
+                     "P_linear_N_per_mm,u0_linear_mm,peak_pressure_linear_MPa,"
+                     "P_hertz_N_per_mm,P_thin_layer_N_per_mm\n"
+                  << std::setprecision(10);
+              for (const auto &r : rows)
+                out << r.nonlinear.theta0 * deg << ',' << r.nonlinear.nip_load
+                    << ',' << r.nonlinear.indentation << ','
+                    << r.nonlinear.half_chord << ',' << r.nonlinear.half_arc
+                    << ',' << r.nonlinear.peak_pressure << ','
+                    << r.nonlinear.nip_load / (2 * r.nonlinear.half_chord)
+                    << ',' << r.max_principal_strain << ','
+                    << r.bond_sigma_rr_min << ',' << r.bond_sigma_rtheta_max
+                    << ',' << r.load_from_traction << ','
+                    << r.nonlinear.conformity << ',' << r.nonlinear.penetration
+                    << ',' << linear_value(r, r.linear.nip_load) << ','
+                    << linear_value(r, r.linear.indentation) << ','
+                    << linear_value(r, r.linear.peak_pressure) << ','
+                    << r.hertz_load << ',' << r.thin_layer_load << '\n';
+            });
+        }
+    }
   } // namespace
 
   int
@@ -112,10 +219,6 @@ namespace rollnip
               std::make_unique<InverseContact>(*linear, linear_parameters);
           }
 
-        const double R = effective_radius(parameters);
-        const double G = 2 * (parameters.material.C1 + parameters.material.C2);
-        const double h =
-          parameters.geometry.outer_radius - parameters.geometry.inner_radius;
         for (unsigned int n = 0; n < values.size(); ++n)
           {
             const std::string dir =
@@ -149,34 +252,7 @@ namespace rollnip
                 break;
               }
 
-            const SurfaceData data    = nonlinear.surface_data(1.);
-            row.max_principal_strain  = data.extremes.max_principal_stretch - 1;
-            const BondExtremes bond   = bond_extremes(data.bond);
-            row.bond_sigma_rr_min     = bond.sigma_rr_min;
-            row.bond_sigma_rtheta_max = bond.sigma_rtheta_max_abs;
-            row.load_from_traction    = load_from_traction(data.outer);
-            const double b            = row.nonlinear.half_chord;
-            row.hertz_load            = numbers::PI * b * b * 4 * G / (4 * R);
-            row.thin_layer_load = 2 * G * std::pow(b, 5) / (15 * R * h * h * h);
-            pcout << "Nip " << n + 1 << ": P from the applied pressure "
-                  << std::setprecision(6) << row.nonlinear.nip_load
-                  << " N/mm, from the surface stress " << row.load_from_traction
-                  << " N/mm (difference " << std::setprecision(3)
-                  << 100 * (row.load_from_traction / row.nonlinear.nip_load - 1)
-                  << " %)" << std::endl;
-            // The two agree to a fraction of a per cent on a mesh that
-            // resolves the nip; far apart, the numbers above are not to be
-            // trusted.
-            const double mismatch =
-              std::abs(row.load_from_traction / row.nonlinear.nip_load - 1);
-            if (root && !(mismatch < traction_mismatch_warning))
-              std::cerr << "rollnip: warning: nip " << n + 1
-                        << ": P from the surface stress differs from the "
-                           "applied P by "
-                        << std::setprecision(3) << 100 * mismatch
-                        << " %: the mesh does not resolve this nip (refine "
-                           "it, or check Geometry and Contact/Values)"
-                        << std::endl;
+            evaluate_nip(nonlinear, parameters, n + 1, row);
 
             if (linear)
               {
@@ -209,58 +285,7 @@ namespace rollnip
         throw;
       }
 
-    // A linear companion that did not converge has no value to show.
-    auto linear_value = [with_linear](const NipRow &r, const double v) {
-      return !with_linear         ? 0.
-             : r.linear.converged ? v
-                                  : std::numeric_limits<double>::quiet_NaN();
-    };
-    // The nip characteristic.
-    pcout << std::endl
-          << "Nip characteristic (P two-sided per unit length; b = deformed "
-             "half-chord)"
-          << std::endl
-          << " theta0[deg]    P[N/mm]    u0[mm]   b[mm]  arc[mm]  peak f[MPa]"
-             "  mean f[MPa]  max strain  P_linear  P_Hertz  P_thin"
-          << std::endl;
-    for (const auto &r : rows)
-      pcout << std::fixed << std::setprecision(4) << std::setw(11)
-            << r.nonlinear.theta0 * deg << std::setw(11) << r.nonlinear.nip_load
-            << std::setw(10) << r.nonlinear.indentation << std::setw(8)
-            << r.nonlinear.half_chord << std::setw(9) << r.nonlinear.half_arc
-            << std::setw(13) << r.nonlinear.peak_pressure << std::setw(13)
-            << r.nonlinear.nip_load / (2 * r.nonlinear.half_chord)
-            << std::setw(12) << r.max_principal_strain << std::setw(10)
-            << linear_value(r, r.linear.nip_load) << std::setw(9)
-            << r.hertz_load << std::setw(8) << r.thin_layer_load << std::endl;
-    if (root)
-      {
-        std::filesystem::create_directories(top);
-        write_atomically(
-          top + "/nip_characteristic.csv", [&](std::ostream &out) {
-            out << "theta0_deg,P_N_per_mm,u0_mm,half_chord_mm,half_arc_mm,"
-                   "peak_pressure_MPa,mean_pressure_MPa,max_principal_strain,"
-                   "bond_sigma_rr_min_MPa,bond_sigma_rtheta_max_MPa,"
-                   "P_from_traction_N_per_mm,conformity,penetration,"
-                   "P_linear_N_per_mm,u0_linear_mm,peak_pressure_linear_MPa,"
-                   "P_hertz_N_per_mm,P_thin_layer_N_per_mm\n"
-                << std::setprecision(10);
-            for (const auto &r : rows)
-              out << r.nonlinear.theta0 * deg << ',' << r.nonlinear.nip_load
-                  << ',' << r.nonlinear.indentation << ','
-                  << r.nonlinear.half_chord << ',' << r.nonlinear.half_arc
-                  << ',' << r.nonlinear.peak_pressure << ','
-                  << r.nonlinear.nip_load / (2 * r.nonlinear.half_chord) << ','
-                  << r.max_principal_strain << ',' << r.bond_sigma_rr_min << ','
-                  << r.bond_sigma_rtheta_max << ',' << r.load_from_traction
-                  << ',' << r.nonlinear.conformity << ','
-                  << r.nonlinear.penetration << ','
-                  << linear_value(r, r.linear.nip_load) << ','
-                  << linear_value(r, r.linear.indentation) << ','
-                  << linear_value(r, r.linear.peak_pressure) << ','
-                  << r.hertz_load << ',' << r.thin_layer_load << '\n';
-          });
-      }
+    write_nip_characteristic(rows, with_linear, top);
     if (rows_out)
       *rows_out = rows;
     if (!failure.empty())

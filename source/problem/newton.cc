@@ -101,6 +101,41 @@ namespace rollnip
     constraints.distribute(x);
   }
 
+  double
+  RollProblem::residual_round_off_floor() const
+  {
+    // Stresses of order G summed over the cells: I + grad u loses the
+    // digits of u next to 1, whatever the load.
+    const double G = 2 * (parameters.material.C1 + parameters.material.C2);
+    const double cell_size =
+      std::sqrt(domain_area / triangulation.n_global_active_cells());
+    return round_off_factor * std::numeric_limits<double>::epsilon() * G *
+           cell_size * std::sqrt(double(dof_handler.n_dofs()));
+  }
+
+  void
+  RollProblem::log_step(const unsigned int step,
+                        const double       lambda,
+                        const StepRecord  &r)
+  {
+    pcout << std::setw(5) << step << std::fixed << std::setprecision(6)
+          << std::setw(15) << lambda << std::setw(8) << r.newton_iterations
+          << std::scientific << std::setprecision(3) << std::setw(16)
+          << r.residual << std::fixed << std::setprecision(6) << std::setw(17)
+          << r.u_r_centre << std::setw(11) << std::setprecision(4) << r.nip_load
+          << std::setw(11) << std::setprecision(2) << r.wall_time << std::endl;
+    if (parameters.output.write_vtu &&
+        (parameters.output.vtu_every_step || lambda >= 1. - 1e-12))
+      write_vtu(step, lambda);
+    if (parameters.output.write_csv && parameters.output.csv_every_step)
+      {
+        // Collective; rank 0 writes.
+        const SurfaceData data = surface_data(lambda);
+        if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+          write_surface_csv(data, "-" + Utilities::int_to_string(step, 4));
+      }
+  }
+
   /**
    * Full Newton at a fixed load fraction (doc/intro.md, section 5). The
    * tests of convergence use
@@ -119,24 +154,18 @@ namespace rollnip
     TrilinosWrappers::MPI::Vector start(solution);
     TrilinosWrappers::MPI::Vector newton_update(solution);
 
-    // The round-off floor of |R_u|: stresses of order G summed over the
-    // cells (I + grad u loses digits of u next to 1). Relative to a tiny
-    // load it can exceed the residual tolerance; it is added to the
-    // tolerance so that any load scale stays reachable.
-    const double f_ext = external_force.l2_norm();
-    const double G     = 2 * (parameters.material.C1 + parameters.material.C2);
-    const double cell_size =
-      std::sqrt(domain_area / triangulation.n_global_active_cells());
-    const double floor_R = round_off_factor *
-                           std::numeric_limits<double>::epsilon() * G *
-                           cell_size * std::sqrt(double(dof_handler.n_dofs())) /
-                           (f_ext > 0 ? f_ext : 1.);
-    auto measure = [&](double &e_R, double &e_J) {
+    // e_R and the round-off floor relative to the load of this fraction
+    // (assemble() sets the external force).
+    const double floor_abs = residual_round_off_floor();
+    double       floor_R   = 0;
+    auto         measure   = [&](double &e_R, double &e_J) {
       const double r_p     = pressure_part_norm(system_rhs);
       const double r_total = system_rhs.l2_norm();
       const double r_u = std::sqrt(std::max(0., r_total * r_total - r_p * r_p));
-      e_R              = r_u / (f_ext > 0 ? f_ext : 1.);
-      double s         = 0;
+      const double f_ext = external_force.l2_norm();
+      e_R                = r_u / (f_ext > 0 ? f_ext : 1.);
+      floor_R            = floor_abs / (f_ext > 0 ? f_ext : 1.);
+      double s           = 0;
       for (const auto i : pressure_dofs)
         s += std::abs(system_rhs[i]);
       e_J = Utilities::MPI::sum(s, mpi_communicator) / domain_area;
@@ -304,26 +333,7 @@ namespace rollnip
             const Tensor<1, dim> resultant = load_resultant(lambda);
             r.nip_load                     = -2. * resultant[0];
             if (log_steps)
-              pcout << std::setw(5) << step << std::fixed
-                    << std::setprecision(6) << std::setw(15) << lambda
-                    << std::setw(8) << r.newton_iterations << std::scientific
-                    << std::setprecision(3) << std::setw(16) << r.residual
-                    << std::fixed << std::setprecision(6) << std::setw(17)
-                    << r.u_r_centre << std::setw(11) << std::setprecision(4)
-                    << r.nip_load << std::setw(11) << std::setprecision(2)
-                    << r.wall_time << std::endl;
-            if (log_steps && parameters.output.write_vtu &&
-                (parameters.output.vtu_every_step || lambda >= 1. - 1e-12))
-              write_vtu(step, lambda);
-            if (log_steps && parameters.output.write_csv &&
-                parameters.output.csv_every_step)
-              {
-                // Collective; rank 0 writes.
-                const SurfaceData data = surface_data(lambda);
-                if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-                  write_surface_csv(data,
-                                    "-" + Utilities::int_to_string(step, 4));
-              }
+              log_step(step, lambda, r);
             if (r.newton_iterations <= ls.fast_newton_iterations)
               increment *= ls.growth_factor;
           }

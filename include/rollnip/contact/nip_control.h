@@ -67,6 +67,14 @@ namespace rollnip
     double
     secant_guess(const double target) const;
 
+    /// The next theta0 after @p theta for @p target: predict(), kept
+    /// within a factor 2 of @p theta, inside the bracket of converged
+    /// nips and below @p upper (a theta0 that failed, or the mesh's limit).
+    double
+    next_theta(const double target,
+               const double theta,
+               const double upper) const;
+
     /// The controlled quantity of a nip.
     double
     controlled(const ContactResult &r) const;
