@@ -647,11 +647,17 @@ namespace rollnip
           values.push_back(x * (mode == ContactMode::nip_angle ? degree : 1.));
         }
       const std::string r = prm.get("Indenter radius");
+      // Compared as numbers: "8.0" is the default "8".
+      const auto as_numbers = [](const std::string &text) {
+        std::vector<double> x;
+        for (const auto &v : Utilities::split_string_list(text))
+          x.push_back(std::strtod(v.c_str(), nullptr));
+        return x;
+      };
       keys_set_without_mode =
         mode == ContactMode::none &&
-        (Utilities::split_string_list(prm.get("Values")) !=
-           std::vector<std::string>{default_values} ||
-         r != default_indenter_radius);
+        (as_numbers(prm.get("Values")) != as_numbers(default_values) ||
+         as_numbers(r) != as_numbers(default_indenter_radius));
       if (r == "inf" || r == "infinity")
         indenter_radius = std::numeric_limits<double>::infinity();
       else
@@ -868,7 +874,8 @@ namespace rollnip
                              "indentation) or remove them"));
       if (contact.mode == ContactMode::none &&
           load.pressure_function.find("theta0") != std::string::npos)
-        AssertThrow(load.theta0 <= geometry.sector_angle * (1 + 1e-12),
+        AssertThrow(load.theta0 <= geometry.sector_angle * (1 + 1e-12) ||
+                      !check.loads_beyond(load.theta0),
                     ExcMessage("Load/theta0 (" + number(load.theta0 / degree) +
                                " deg) reaches beyond Geometry/Sector angle (" +
                                number(geometry.sector_angle / degree) +
@@ -958,7 +965,8 @@ namespace rollnip
                              std::to_string(max_nips_per_run) +
                              " (each is at least one full contact solve)"));
       if (mesh.source == MeshSource::builtin)
-        check_cost(*this, mesh.radial_cells * mesh.circumferential_cells);
+        check_cost(*this,
+                   double(mesh.radial_cells) * mesh.circumferential_cells);
       AssertThrow(!std::filesystem::exists(output.directory) ||
                     std::filesystem::is_directory(output.directory),
                   ExcMessage("Output/Directory '" + output.directory +

@@ -3,7 +3,9 @@
 #include <rollnip/run_errors.h>
 
 #include <cctype>
+#include <filesystem>
 #include <iostream>
+#include <new>
 
 namespace rollnip
 {
@@ -38,16 +40,45 @@ namespace rollnip
     return line;
   }
 
+  bool
+  is_local_error(const std::exception &e)
+  {
+    return dynamic_cast<const LocalError *>(&e) ||
+           dynamic_cast<const std::filesystem::filesystem_error *>(&e) ||
+           dynamic_cast<const std::bad_alloc *>(&e);
+  }
+
+  void
+  local_failure(const std::string &message)
+  {
+    const unsigned int n =
+      dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    if (n > 1)
+      {
+        std::cerr << "rollnip: error: " << message << " (on MPI process "
+                  << dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD)
+                  << " of " << n << "; ending all processes)" << std::endl;
+        MPI_Abort(MPI_COMM_WORLD, 1);
+      }
+    throw LocalError(message);
+  }
+
+  void
+  rethrow_if_local(const std::exception &e)
+  {
+    if (is_local_error(e) &&
+        dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+      throw;
+  }
+
   namespace
   {
-    bool local_errors = false;
-
     int
-    report(const bool root, const std::string &message)
+    report(const bool root, const std::string &message, const bool local)
     {
       const unsigned int n =
         dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-      if (local_errors && n > 1)
+      if (local && n > 1)
         {
           std::cerr << "rollnip: error: " << message << " (on MPI process "
                     << dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD)
@@ -60,12 +91,6 @@ namespace rollnip
     }
   } // namespace
 
-  void
-  errors_may_be_local()
-  {
-    local_errors = true;
-  }
-
   int
   run_guarded(const bool root, const std::function<int()> &body)
   {
@@ -75,11 +100,11 @@ namespace rollnip
       }
     catch (const std::exception &e)
       {
-        return report(root, one_line_message(e));
+        return report(root, one_line_message(e), is_local_error(e));
       }
     catch (...)
       {
-        return report(root, "unknown exception");
+        return report(root, "unknown exception", false);
       }
   }
 } // namespace rollnip

@@ -11,11 +11,12 @@ namespace rollnip
    * refinements times (or the largest Study/Refinement levels), and the
    * memory the sparse direct solver takes for them (measured at 2.6 to 3.7
    * kB per DoF for Q1-P0 on the default scene, doc/accuracy.md), against
-   * the physical memory. The one-line message carries the estimate.
+   * the physical memory. The one-line message carries the estimate. Not
+   * checked for Linear solver/Method = gmres-amg (not measured).
    */
   void
   check_cost(const Parameters::AllParameters &parameters,
-             const unsigned int               coarse_cells);
+             const double                     coarse_cells);
 
   /// The most nips one run takes (Contact/Values): each is at least one
   /// full contact solve.

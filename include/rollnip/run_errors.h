@@ -3,6 +3,7 @@
 
 #include <exception>
 #include <functional>
+#include <stdexcept>
 #include <string>
 
 namespace rollnip
@@ -16,21 +17,44 @@ namespace rollnip
   one_line_message(const std::exception &e);
 
   /**
+   * An error that one process may meet alone (rank 0's file output): the
+   * others may be waiting in a collective call.
+   */
+  class LocalError : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
+  /**
+   * An error met by this process alone (rank 0's files): with more than
+   * one process it is printed here and ends all of them at once, before
+   * any destructor could wait in a collective call; alone, it throws a
+   * LocalError.
+   */
+  [[noreturn]] void
+  local_failure(const std::string &message);
+
+  /// Whether @p e may have been met by this process alone: a LocalError,
+  /// a file-system error or an allocation failure.
+  bool
+  is_local_error(const std::exception &e);
+
+  /**
    * Runs @p body and turns any exception into "rollnip: error: ..." on
-   * standard error and exit code 1. Until errors_may_be_local() is called,
-   * every process meets the same errors (reading and checking the input),
-   * so rank 0 speaks and all return. After it, one process may fail while
-   * the others wait in a collective call: with more than one process the
-   * failing one prints the message and ends all of them (MPI_Abort), so
-   * that a run never hangs.
+   * standard error and exit code 1. Most errors are met by every process
+   * alike (the input, a refused nip): rank 0 speaks and all return. A
+   * local error (is_local_error()) with more than one process is printed
+   * by the process that met it, which then ends all of them (MPI_Abort),
+   * so that a run never hangs.
    */
   int
   run_guarded(const bool root, const std::function<int()> &body);
 
-  /// From now on an error may be met by one process alone (see
-  /// run_guarded()); called once the mesh is set up.
+  /// For a handler that carries on after an error (the refinement study):
+  /// rethrows @p e if it is local and there is more than one process.
   void
-  errors_may_be_local();
+  rethrow_if_local(const std::exception &e);
 } // namespace rollnip
 
 #endif

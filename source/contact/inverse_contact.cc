@@ -505,7 +505,7 @@ namespace rollnip
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
       return;
     constexpr double deg = 180. / numbers::PI;
-    std::filesystem::create_directories(directory);
+    make_directories(directory);
     write_atomically(directory + "/contact.txt", [&](std::ostream &out) {
       out << std::setprecision(8)
           << "# rollnip contact (Batra's inverse iteration); mm, MPa, N/mm\n"

@@ -151,7 +151,7 @@ namespace rollnip
               << r.hertz_load << std::setw(8) << r.thin_layer_load << std::endl;
       if (root)
         {
-          std::filesystem::create_directories(top);
+          make_directories(top);
           write_atomically(
             top + "/nip_characteristic.csv", [&](std::ostream &out) {
               out << "theta0_deg,P_N_per_mm,u0_mm,half_chord_mm,half_arc_mm,"

@@ -52,12 +52,27 @@ namespace rollnip
   std::vector<double>
   PressureLoad::samples() const
   {
+    // Midpoints of 0.01 deg intervals: the load is used at quadrature
+    // points, never exactly at the ends (sin(x)/x at 0 is fine).
     const double        step = 0.01 * numbers::PI / 180;
     const unsigned int  n    = std::ceil(sector_angle / step);
-    std::vector<double> theta(n + 1);
-    for (unsigned int i = 0; i <= n; ++i)
-      theta[i] = sector_angle * i / n;
+    std::vector<double> theta(n);
+    for (unsigned int i = 0; i < n; ++i)
+      theta[i] = sector_angle * (i + 0.5) / n;
     return theta;
+  }
+
+  bool
+  PressureLoad::loads_beyond(const double theta) const
+  {
+    const double end = std::min(theta, numbers::PI);
+    for (unsigned int i = 1; i <= 100; ++i)
+      {
+        const double f = value(sector_angle + (end - sector_angle) * i / 100.);
+        if (std::isfinite(f) && f != 0)
+          return true;
+      }
+    return false;
   }
 
   void
@@ -96,9 +111,8 @@ namespace rollnip
             peak    = f;
             peak_at = theta[i];
           }
-        // Trapezoidal rule; the pressure pushes along -N on the arc.
-        const double w = (i == 0 || i + 1 == theta.size() ? 0.5 : 1.) *
-                         (theta[1] - theta[0]) * outer_radius;
+        // Midpoint rule; the pressure pushes along -N on the arc.
+        const double w = sector_angle / theta.size() * outer_radius;
         fx -= w * f * std::cos(theta[i]);
         fy -= w * f * std::sin(theta[i]);
       }

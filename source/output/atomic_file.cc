@@ -1,11 +1,23 @@
 #include <rollnip/global.h>
 #include <rollnip/output/atomic_file.h>
+#include <rollnip/run_errors.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 
 namespace rollnip
 {
+  void
+  make_directories(const std::string &directory)
+  {
+    std::error_code error;
+    std::filesystem::create_directories(directory, error);
+    if (error)
+      local_failure("cannot create the output directory '" + directory +
+                    "': " + error.message());
+  }
+
   void
   write_atomically(const std::string                         &path,
                    const std::function<void(std::ostream &)> &write)
@@ -13,13 +25,14 @@ namespace rollnip
     const std::string tmp = path + ".part";
     {
       std::ofstream out(tmp);
-      AssertThrow(out.good(),
-                  ExcMessage("cannot open '" + tmp + "' for writing"));
+      if (!out.good())
+        local_failure("cannot open '" + tmp + "' for writing");
       write(out);
       out.close();
-      AssertThrow(!out.fail(), ExcMessage("writing '" + tmp + "' failed"));
+      if (out.fail())
+        local_failure("writing '" + tmp + "' failed");
     }
-    AssertThrow(std::rename(tmp.c_str(), path.c_str()) == 0,
-                ExcMessage("cannot rename '" + tmp + "' to '" + path + "'"));
+    if (std::rename(tmp.c_str(), path.c_str()) != 0)
+      local_failure("cannot rename '" + tmp + "' to '" + path + "'");
   }
 } // namespace rollnip

@@ -41,7 +41,7 @@ namespace rollnip
     const unsigned int rank =
       Utilities::MPI::this_mpi_process(mpi_communicator);
     if (rank == 0)
-      std::filesystem::create_directories(dir);
+      make_directories(dir);
     MPI_Barrier(mpi_communicator);
 
     // Smoothed pressure: area-weighted average of the cell means of q.
@@ -160,7 +160,7 @@ namespace rollnip
     const double         u_r       = radial_displacement_on_line_of_centres();
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;
-    std::filesystem::create_directories(output_directory);
+    make_directories(output_directory);
     // No TimerOutput::Scope here: its timer is collective and only rank 0
     // gets this far.
     if (parameters.output.write_csv)
@@ -174,7 +174,7 @@ namespace rollnip
   {
     const std::string &dir = output_directory;
     constexpr double   deg = 180. / numbers::PI;
-    std::filesystem::create_directories(dir);
+    make_directories(dir);
     write_atomically(
       dir + "/outer_surface" + suffix + ".csv", [&](std::ostream &out) {
         out << "theta_deg,X_mm,Y_mm,x_mm,y_mm,u_r_mm,u_theta_mm,"

@@ -147,7 +147,6 @@ namespace rollnip
           Parameters::BoundaryCondition::pressure)
       pcout << PressureLoad(parameters.load, parameters.geometry).describe()
             << std::endl;
-    errors_may_be_local();
   }
 
   double

@@ -8,6 +8,7 @@
 #include <rollnip/geometry/roll_mesh.h>
 #include <rollnip/output/atomic_file.h>
 #include <rollnip/problem.h>
+#include <rollnip/run_errors.h>
 #include <rollnip/study/refinement_study.h>
 
 #include <chrono>
@@ -277,6 +278,8 @@ namespace rollnip
               }
             catch (const std::exception &e)
               {
+                // Another process may be waiting in a collective call.
+                rethrow_if_local(e);
                 code   = 1;
                 thrown = e.what();
               }
@@ -455,7 +458,7 @@ namespace rollnip
     pcout << '\n' << text.str();
     if (root)
       {
-        std::filesystem::create_directories(top);
+        make_directories(top);
         write_atomically(top + "/study.csv",
                          [&](std::ostream &out) { out << csv.str(); });
         write_atomically(top + "/study.txt",

@@ -33,6 +33,11 @@ namespace rollnip
     void
     check_finite() const;
 
+    /// Whether f is non-zero somewhere beyond the sector, up to @p theta
+    /// [rad] (at most 180 deg): that part of the load is not applied.
+    bool
+    loads_beyond(const double theta) const;
+
     /// Where f is non-zero on [0, sector angle], its peak and its
     /// resultant on the undeformed outer arc, as one line for the screen:
     /// an expression written in degrees shows as a load on the whole arc.

@@ -10,11 +10,17 @@ namespace rollnip
   /**
    * Writes a file whole or not at all: @p write fills a temporary file next
    * to @p path, which is renamed onto @p path only after it was flushed and
-   * closed without error. Throws with the file name on failure.
+   * closed without error. A failure is local_failure() with the file name
+   * (only rank 0 writes).
    */
   void
   write_atomically(const std::string                         &path,
                    const std::function<void(std::ostream &)> &write);
+
+  /// std::filesystem::create_directories, with a failure turned into
+  /// local_failure() naming the directory.
+  void
+  make_directories(const std::string &directory);
 } // namespace rollnip
 
 #endif
