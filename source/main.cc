@@ -31,6 +31,68 @@ namespace
     "Run in parallel with: mpirun -np N rollnip FILE.prm\n"
     "Exit status: 0 when the full load was reached, 1 on bad input or when\n"
     "the run stopped early (the last converged state is written).\n";
+
+  /// Reads the command line into @p file and @p validate_only; returns
+  /// the exit code when the run ends here (help, an error), else -1.
+  int
+  parse_arguments(const int    argc,
+                  char       **argv,
+                  const bool   root,
+                  std::string &file,
+                  bool        &validate_only)
+  {
+    using namespace rollnip;
+    for (int i = 1; i < argc; ++i)
+      {
+        const std::string arg = argv[i];
+        if (arg == "-h" || arg == "--help")
+          {
+            if (root)
+              std::cout << usage;
+            return 0;
+          }
+        else if (arg == "--print-parameters")
+          {
+            if (root)
+              {
+                ParameterHandler prm;
+                Parameters::AllParameters::declare(prm);
+                prm.print_parameters(std::cout,
+                                     ParameterHandler::PRM |
+                                       ParameterHandler::KeepDeclarationOrder);
+              }
+            return 0;
+          }
+        else if (arg == "--validate")
+          validate_only = true;
+        else if (!arg.empty() && arg[0] == '-')
+          {
+            if (root)
+              std::cerr << "rollnip: error: unknown option '" << arg
+                        << "' (see rollnip --help)" << std::endl;
+            return 1;
+          }
+        else if (file.empty())
+          file = arg;
+        else
+          {
+            if (root)
+              std::cerr << "rollnip: error: more than one parameter file given "
+                           "(see rollnip --help)"
+                        << std::endl;
+            return 1;
+          }
+      }
+    if (file.empty())
+      {
+        if (root)
+          std::cerr << "rollnip: error: no parameter file given (see rollnip "
+                       "--help)"
+                    << std::endl;
+        return 1;
+      }
+    return -1;
+  }
 } // namespace
 
 int
@@ -43,55 +105,9 @@ main(int argc, char **argv)
 
   std::string file;
   bool        validate_only = false;
-  for (int i = 1; i < argc; ++i)
-    {
-      const std::string arg = argv[i];
-      if (arg == "-h" || arg == "--help")
-        {
-          if (root)
-            std::cout << usage;
-          return 0;
-        }
-      else if (arg == "--print-parameters")
-        {
-          if (root)
-            {
-              ParameterHandler prm;
-              Parameters::AllParameters::declare(prm);
-              prm.print_parameters(std::cout,
-                                   ParameterHandler::PRM |
-                                     ParameterHandler::KeepDeclarationOrder);
-            }
-          return 0;
-        }
-      else if (arg == "--validate")
-        validate_only = true;
-      else if (!arg.empty() && arg[0] == '-')
-        {
-          if (root)
-            std::cerr << "rollnip: error: unknown option '" << arg
-                      << "' (see rollnip --help)" << std::endl;
-          return 1;
-        }
-      else if (file.empty())
-        file = arg;
-      else
-        {
-          if (root)
-            std::cerr << "rollnip: error: more than one parameter file given "
-                         "(see rollnip --help)"
-                      << std::endl;
-          return 1;
-        }
-    }
-  if (file.empty())
-    {
-      if (root)
-        std::cerr << "rollnip: error: no parameter file given (see rollnip "
-                     "--help)"
-                  << std::endl;
-      return 1;
-    }
+  if (const int code = parse_arguments(argc, argv, root, file, validate_only);
+      code >= 0)
+    return code;
 
   install_interrupt_handlers();
   return run_guarded(root, [&]() {

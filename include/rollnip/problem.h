@@ -290,6 +290,17 @@ namespace rollnip
     double
     residual_round_off_floor() const;
 
+    /// Solves load step @p step at @p target from the state extrapolated
+    /// through the converged states at @p previous_lambda (@p previous)
+    /// and @p lambda (the current one); restores the current state if
+    /// Newton fails from there (newton.cc).
+    bool
+    solve_from_prediction(const double                         lambda,
+                          const double                         target,
+                          const double                         previous_lambda,
+                          const TrilinosWrappers::MPI::Vector &previous,
+                          const unsigned int                   step);
+
     /// The screen line of converged load step @p step at @p lambda, and
     /// its VTU and surface CSV when asked for every step (newton.cc).
     void

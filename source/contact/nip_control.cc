@@ -63,16 +63,23 @@ namespace rollnip
     return std::asin(std::min(b / R0, 0.9));
   }
 
-  double
-  NipControl::secant_guess(const double target) const
+  std::vector<NipControl::Point>
+  NipControl::nearest_first(const double target) const
   {
-    Assert(!converged.empty(), ExcInternalError());
     std::vector<Point> near = converged;
     std::sort(near.begin(), near.end(), [target](const auto &a, const auto &b) {
       return std::abs(std::log(a.q / target)) <
              std::abs(std::log(b.q / target));
     });
-    const double default_slope =
+    return near;
+  }
+
+  double
+  NipControl::secant_guess(const double target) const
+  {
+    Assert(!converged.empty(), ExcInternalError());
+    const std::vector<Point> near = nearest_first(target);
+    const double             default_slope =
       by_load ? default_slope_load : default_slope_indentation;
     double slope = default_slope;
     if (near.size() > 1 && near[0].theta != near[1].theta)
@@ -88,11 +95,7 @@ namespace rollnip
   NipControl::predict(const double target) const
   {
     Assert(!converged.empty(), ExcInternalError());
-    std::vector<Point> near = converged;
-    std::sort(near.begin(), near.end(), [target](const auto &a, const auto &b) {
-      return std::abs(std::log(a.q / target)) <
-             std::abs(std::log(b.q / target));
-    });
+    const std::vector<Point> near = nearest_first(target);
     // The nearest nip, and up to two more whose q differ from those taken
     // by a good part of the distance to the target: the iterates of an
     // earlier target lie too close together to give a curvature.

@@ -115,6 +115,42 @@ namespace rollnip
                   << std::endl;
     }
 
+    /// The results files of one nip in @p dir: the problem's (status from
+    /// the contact result) and the contact's (collective).
+    void
+    write_nip(RollProblem         &problem,
+              const ContactResult &result,
+              const std::string   &dir,
+              const bool           linear_companion = false)
+    {
+      // A linear companion that failed is said once; its columns are nan.
+      if (linear_companion && !result.converged &&
+          Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        std::cout << "The linear companion in " << dir << " did not converge ("
+                  << result.message << "); its columns are nan" << std::endl;
+      RunStatus status;
+      status.converged     = result.converged;
+      status.load_fraction = 1.;
+      status.message       = "contact: " + result.message;
+      problem.write_results(status);
+      write_contact_results(result, dir);
+    }
+
+    /// Why a sweep stopped at nip @p n of @p total with @p converged
+    /// nips done: the contact's @p message, or the interruption.
+    std::string
+    why_stopped(const std::string &message,
+                const unsigned int n,
+                const std::size_t  total,
+                const std::size_t  converged)
+    {
+      if (!interrupt_requested(MPI_COMM_WORLD))
+        return message;
+      return interrupt_message() + " during nip " + std::to_string(n) + " of " +
+             std::to_string(total) + "; " + std::to_string(converged) +
+             " converged nip(s) are in nip_characteristic.csv";
+    }
+
     /// The nip characteristic on the screen and, whole, as
     /// @p top/nip_characteristic.csv (collective; rank 0 writes).
     void
@@ -228,27 +264,19 @@ namespace rollnip
             row.n_cells   = nonlinear.n_cells();
             row.nonlinear = control.solve(values[n]);
             nonlinear.set_output_directory(dir);
-            RunStatus status;
-            status.converged     = row.nonlinear.converged;
-            status.load_fraction = 1.;
-            status.message       = "contact: " + row.nonlinear.message;
             if (parameters.output.write_vtu)
               nonlinear.write_vtu(n + 1, 1.);
-            nonlinear.write_results(status);
-            write_contact_results(row.nonlinear, dir);
+            write_nip(nonlinear, row.nonlinear, dir);
             if (root)
               write_indenter_outline(parameters,
                                      row.nonlinear,
                                      dir + "/indenter.csv");
             if (!row.nonlinear.converged)
               {
-                failure = row.nonlinear.message;
-                if (interrupt_requested(MPI_COMM_WORLD))
-                  failure = interrupt_message() + " during nip " +
-                            std::to_string(n + 1) + " of " +
-                            std::to_string(values.size()) + "; " +
-                            std::to_string(rows.size()) +
-                            " converged nip(s) are in nip_characteristic.csv";
+                failure = why_stopped(row.nonlinear.message,
+                                      n + 1,
+                                      values.size(),
+                                      rows.size());
                 break;
               }
 
@@ -258,17 +286,7 @@ namespace rollnip
               {
                 row.linear = linear_contact->solve(row.nonlinear.theta0);
                 linear->set_output_directory(dir + "/linear");
-                RunStatus ls;
-                ls.converged     = row.linear.converged;
-                ls.load_fraction = 1.;
-                ls.message       = "contact: " + row.linear.message;
-                linear->write_results(ls);
-                write_contact_results(row.linear, dir + "/linear");
-                if (!row.linear.converged)
-                  pcout << "Nip " << n + 1
-                        << ": the linear companion did not converge ("
-                        << row.linear.message << "); its columns are nan"
-                        << std::endl;
+                write_nip(*linear, row.linear, dir + "/linear", true);
               }
             rows.push_back(row);
           }

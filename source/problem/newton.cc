@@ -113,6 +113,27 @@ namespace rollnip
            cell_size * std::sqrt(double(dof_handler.n_dofs()));
   }
 
+  bool
+  RollProblem::solve_from_prediction(
+    const double                         lambda,
+    const double                         target,
+    const double                         previous_lambda,
+    const TrilinosWrappers::MPI::Vector &previous,
+    const unsigned int                   step)
+  {
+    // u(target) ~ u + (target - lambda) du/dlambda, the secant through the
+    // last two converged states.
+    const TrilinosWrappers::MPI::Vector converged(solution);
+    const double s = (target - lambda) / (lambda - previous_lambda);
+    solution.sadd(1. + s, -s, previous);
+    locally_relevant_solution = solution;
+    if (solve_load_step(target, step))
+      return true;
+    solution                  = converged;
+    locally_relevant_solution = solution;
+    return false;
+  }
+
   void
   RollProblem::log_step(const unsigned int step,
                         const double       lambda,
@@ -304,22 +325,11 @@ namespace rollnip
             break;
           }
         const double target = std::min(1., lambda + increment);
-        // Predictor: u(target) ~ u + (target - lambda) du/dlambda.
         const TrilinosWrappers::MPI::Vector converged(solution);
-        bool                                solved = false;
-        if (ls.extrapolate && previous_lambda >= 0 && lambda > previous_lambda)
-          {
-            solution.sadd(1. + (target - lambda) / (lambda - previous_lambda),
-                          -(target - lambda) / (lambda - previous_lambda),
-                          previous);
-            locally_relevant_solution = solution;
-            solved                    = solve_load_step(target, step + 1);
-            if (!solved)
-              {
-                solution                  = converged;
-                locally_relevant_solution = solution;
-              }
-          }
+        bool solved = ls.extrapolate && previous_lambda >= 0 &&
+                      lambda > previous_lambda &&
+                      solve_from_prediction(
+                        lambda, target, previous_lambda, previous, step + 1);
         if (!solved)
           solved = solve_load_step(target, step + 1);
         if (solved)

@@ -51,6 +51,10 @@ namespace rollnip
       double q;     ///< P [N/mm] or u0 [mm]
     };
 
+    /// The converged nips, nearest to @p target (in log q) first.
+    std::vector<Point>
+    nearest_first(const double target) const;
+
     /// The first theta0 to try for @p target.
     double
     first_guess(const double target) const;
