@@ -106,6 +106,14 @@ def nip_results(directory, n):
     return results
 
 
+def print_table(header, rows):
+    """A Markdown table, as doc/accuracy.md quotes it."""
+    print("| " + " | ".join(header) + " |")
+    print("|" + "---|" * len(header))
+    for r in rows:
+        print("| " + " | ".join(str(x) for x in r) + " |")
+
+
 def main():
     n = int(sys.argv[1]) if len(sys.argv) > 1 else 3
     if n < 1:
@@ -161,26 +169,17 @@ def main():
                     row += ["-"] * 3
                 accuracy_rows.append(row)
     print()
-    print("| " + " | ".join(sweep_header) + " |")
-    print("|" + "---|" * len(sweep_header))
-    for r in sweep_rows:
-        print("| " + " | ".join(str(x) for x in r) + " |")
+    print_table(sweep_header, sweep_rows)
     thetas = ", ".join(f"{t:g}" for t in THETAS)
     print(f"\nAccuracy over theta0 = {thetas} deg against the nip-fitted "
           "level 4 (largest relative error of the six nips)")
-    print("| " + " | ".join(accuracy_header) + " |")
-    print("|" + "---|" * len(accuracy_header))
-    for r in accuracy_rows:
-        print("| " + " | ".join(str(x) for x in r) + " |")
+    print_table(accuracy_header, accuracy_rows)
     p_error_header = ["mesh", "level"] + [f"P error at {t:g} deg" for t in THETAS]
     if p_error_rows:
         print("\nRelative error of P at each theta0"
               + "".join(f"; reference P({t:g}) = {r[0]:.6f} N/mm"
                         for t, r in zip(THETAS, reference)))
-        print("| " + " | ".join(p_error_header) + " |")
-        print("|" + "---|" * len(p_error_header))
-        for r in p_error_rows:
-            print("| " + " | ".join(str(x) for x in r) + " |")
+        print_table(p_error_header, p_error_rows)
     os.makedirs(os.path.join(ROOT, "benchmarks", "results"), exist_ok=True)
     out = os.path.join(ROOT, "benchmarks", "results",
                        time.strftime("nip-control-%Y%m%d-%H%M%S.csv"))
