@@ -2,6 +2,7 @@
 
 #include <rollnip/contact/nip_control.h>
 #include <rollnip/interrupt.h>
+#include <rollnip/material/material_table.h>
 
 #include <algorithm>
 #include <cmath>
@@ -48,7 +49,7 @@ namespace rollnip
     const double R0 = g.outer_radius, h = R0 - g.inner_radius;
     const double Rb = parameters.contact.indenter_radius;
     const double R  = std::isfinite(Rb) ? 1. / (1. / R0 + 1. / Rb) : R0;
-    const double G  = 2 * (parameters.material.C1 + parameters.material.C2);
+    const double G  = surface_shear_modulus(parameters.material);
     double       b;
     if (by_load)
       {

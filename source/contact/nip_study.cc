@@ -4,6 +4,7 @@
 #include <rollnip/contact/nip_control.h>
 #include <rollnip/contact/nip_study.h>
 #include <rollnip/interrupt.h>
+#include <rollnip/material/material_table.h>
 #include <rollnip/output/atomic_file.h>
 
 #include <algorithm>
@@ -84,8 +85,8 @@ namespace rollnip
       const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
       ConditionalOStream pcout(std::cout, root);
       const double       R = effective_radius(parameters);
-      const double G = 2 * (parameters.material.C1 + parameters.material.C2);
-      const double h =
+      const double       G = surface_shear_modulus(parameters.material);
+      const double       h =
         parameters.geometry.outer_radius - parameters.geometry.inner_radius;
       const SurfaceData data    = nonlinear.surface_data(1.);
       row.max_principal_strain  = data.extremes.max_principal_stretch - 1;

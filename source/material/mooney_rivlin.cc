@@ -3,10 +3,18 @@
 namespace rollnip
 {
   MooneyRivlin::MooneyRivlin(const Parameters::Material &material)
-      : C1(material.C1)
-      , C2(material.C2)
-      , linear(material.theory == Parameters::Theory::linear)
-      , q_ref(2. * material.C1 + 4. * material.C2)
+      : MooneyRivlin(material.C1,
+                     material.C2,
+                     material.theory == Parameters::Theory::linear)
+  {}
+
+  MooneyRivlin::MooneyRivlin(const double C1,
+                             const double C2,
+                             const bool   linear_theory)
+      : C1(C1)
+      , C2(C2)
+      , linear(linear_theory)
+      , q_ref(2. * C1 + 4. * C2)
   {}
 
   Tensor<2, dim>

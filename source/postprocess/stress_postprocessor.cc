@@ -3,8 +3,8 @@
 
 namespace rollnip
 {
-  StressPostprocessor::StressPostprocessor(const MooneyRivlin &material)
-      : material(material)
+  StressPostprocessor::StressPostprocessor(const MaterialTable &materials)
+      : materials(materials)
   {}
 
   std::vector<std::string>
@@ -36,6 +36,8 @@ namespace rollnip
     const DataPostprocessorInputs::Vector<dim> &inputs,
     std::vector<Vector<double>>                &computed) const
   {
+    const MooneyRivlin &material =
+      materials[inputs.template get_cell<dim>()->material_id()];
     for (unsigned int p = 0; p < inputs.solution_values.size(); ++p)
       {
         Tensor<2, dim> grad_u;

@@ -1,10 +1,13 @@
 #ifndef rollnip_contact_inverse_contact_h
 #define rollnip_contact_inverse_contact_h
 
-#include <rollnip/contact/indenter.h>
+#include <rollnip/contact/counter_surface.h>
 #include <rollnip/problem.h>
 
+#include <Eigen/Dense>
+
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace rollnip
@@ -65,6 +68,39 @@ namespace rollnip
       types::global_dof_index dof[dim];
     };
 
+    /// The contact zone of one theta0 on the surface nodes: the knots of
+    /// the pressure, the nodes around the edge and the weights of the
+    /// edge row of the equations.
+    struct Zone
+    {
+      double              theta0;
+      std::vector<double> knots;          ///< nodes below theta0, then theta0
+      unsigned int        m;              ///< pressure parameters (= equations)
+      unsigned int        left, above, B; ///< nodes about the edge
+      double              weight;         ///< theta0 between left and above
+      double              c_A, c_B;       ///< edge-row weights
+    };
+
+    /// The pressure parameters of the iteration and its damping memory.
+    struct Iterate
+    {
+      std::vector<double>           a;      ///< f at the knots [MPa]
+      std::vector<double>           f_from; ///< f of the current state
+      TrilinosWrappers::MPI::Vector accepted_state;
+      std::function<double(double)> accepted_pressure;
+      std::vector<double>           accepted_a;
+      double                        accepted_residual;
+      unsigned int                  halvings = 0;
+    };
+
+    /// The gaps of one solved pressure, scaled by u0 (eq. 7.2).
+    struct Gaps
+    {
+      std::vector<double>     g;
+      std::vector<Point<dim>> x; ///< deformed surface nodes
+      double                  u0, residual, conformity;
+    };
+
     /// The outer-surface nodes, ordered by angle, identical on all ranks.
     void
     collect_surface_nodes();
@@ -74,13 +110,50 @@ namespace rollnip
     std::vector<Tensor<1, dim>>
     nodal_values(const TrilinosWrappers::MPI::Vector &v) const;
 
-    RollProblem                     &problem;
-    const Parameters::AllParameters &parameters;
-    const Indenter                   indenter;
-    std::vector<SurfaceNode>         nodes;
-    ConditionalOStream               pcout;
+    /// Fits the mesh, collects the nodes and lays out the zone of theta0.
+    Zone
+    make_zone(const double theta0);
+
+    /// The first pressure: the last one stretched to the new zone, or a
+    /// Hertz-like parabola.
+    void
+    initial_pressure(const Zone &zone, Iterate &iterate) const;
+
+    /// Solves the cover under the pressure iterate.a, ramping from the
+    /// current one and retrying closer to it if that fails; "" on success,
+    /// else why not.
+    std::string
+    carry_pressure(const Zone &zone, Iterate &iterate, const unsigned int it);
+
+    /// The gaps of the current state and the results they give.
+    Gaps
+    measure_gaps(const Zone &zone, ContactResult &result) const;
+
+    /// Takes back and halves an update whose residual grew; "" if the
+    /// iteration goes on, else why it stops.
+    std::string
+    damp(const Zone &zone, const Gaps &gaps, Iterate &iterate, bool &retry);
+
+    /// d(gaps)/d(a): one factorisation, one linearised solve per knot.
+    Eigen::MatrixXd
+    sensitivities(const Zone &zone, const Gaps &gaps);
+
+    /// The first lines of the iteration's screen log.
+    void
+    print_header(const Zone &zone) const;
+
+    /// The checks of a converged nip (pressure sign, penetration) and the
+    /// restore of a failed one.
+    void
+    finish(const Zone &zone, ContactResult &result);
+
+    RollProblem                          &problem;
+    const Parameters::AllParameters      &parameters;
+    const std::unique_ptr<CounterSurface> counter_surface;
+    std::vector<SurfaceNode>              nodes;
+    ConditionalOStream                    pcout;
     /// Contact/Conformity tolerance, and under load or indentation control
-    /// at most a tenth of Contact/Control tolerance: the nip's P and u0
+    /// at most a fraction of Contact/Control tolerance: the nip's P and u0
     /// carry the conformity error, and the control must see past it.
     const double conformity_tolerance;
     /// The pressure of the problem's current state (empty before the

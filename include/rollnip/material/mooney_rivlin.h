@@ -31,6 +31,10 @@ namespace rollnip
   public:
     explicit MooneyRivlin(const Parameters::Material &material);
 
+    /// The law with constants @p C1, @p C2 [MPa], in linear theory if
+    /// @p linear_theory (one layer of a layered cover).
+    MooneyRivlin(const double C1, const double C2, const bool linear_theory);
+
     /// First Piola-Kirchhoff stress (in-plane part).
     Tensor<2, dim>
     piola(const Tensor<2, dim> &F, const double q) const;

@@ -3,7 +3,7 @@
 
 #include <deal.II/numerics/data_postprocessor.h>
 
-#include <rollnip/material/mooney_rivlin.h>
+#include <rollnip/material/material_table.h>
 
 namespace rollnip
 {
@@ -17,7 +17,8 @@ namespace rollnip
   class StressPostprocessor : public DataPostprocessor<dim>
   {
   public:
-    explicit StressPostprocessor(const MooneyRivlin &material);
+    /// Each cell's law is that of its layer in @p materials.
+    explicit StressPostprocessor(const MaterialTable &materials);
 
     void
     evaluate_vector_field(const DataPostprocessorInputs::Vector<dim> &inputs,
@@ -30,7 +31,7 @@ namespace rollnip
     get_needed_update_flags() const override;
 
   private:
-    const MooneyRivlin &material;
+    const MaterialTable &materials;
   };
 } // namespace rollnip
 

@@ -1,0 +1,56 @@
+#ifndef rollnip_solvers_iteration_controls_h
+#define rollnip_solvers_iteration_controls_h
+
+/**
+ * The fixed constants of rollnip's iterations, one line of doc each. The
+ * tolerances and budgets a user sets are in the .prm (parameters.h); these
+ * are the factors of the safeguards, chosen once and kept for all scenes.
+ */
+namespace rollnip
+{
+  namespace IterationControls
+  {
+    // Newton (newton_solver.cc)
+    /// Round-off floor of |R_u| in units of epsilon x G x cell size x
+    /// sqrt(DoFs); measured floors are about a tenth of it.
+    constexpr double round_off_factor = 100;
+    /// Armijo constant: a line-search step must cut the merit by this
+    /// fraction of the step length.
+    constexpr double sufficient_decrease = 1e-4;
+    /// Factor by which the line search shortens the step.
+    constexpr double line_search_factor = 0.5;
+    /// e_R this far below Residual tolerance converges whatever e_u is.
+    constexpr double residual_only_convergence = 1e-3;
+    /// Newton iterations in a row without decrease that give up the step.
+    constexpr unsigned int stuck_iterations = 2;
+
+    // Load stepping (load_stepper.cc)
+    /// Factor of the load increment after a failed step.
+    constexpr double cutback_factor = 0.5;
+    /// Cut-backs between two looks at the load fraction's progress.
+    constexpr unsigned int stall_window = 20;
+    /// Least progress per window, as a fraction of the load still to go.
+    constexpr double stall_progress = 1e-2;
+    /// A load fraction this close to 1 is the full load.
+    constexpr double full_load_slack = 1e-12;
+
+    // Contact iteration (inverse_contact.cc)
+    /// Attempts to carry one pressure update, each closer to the last.
+    constexpr unsigned int pressure_attempts = 4;
+    /// Bounds and factor of the retried fraction of a pressure update:
+    /// just below the fraction carried, at least 0.1, at most 0.5.
+    constexpr double retry_min = 0.1, retry_max = 0.5, retry_factor = 0.8;
+    /// Halvings in a row of a contact update whose residual grew.
+    constexpr unsigned int max_halvings = 4;
+    /// A conformity residual changing by less than this fraction after a
+    /// halving has stalled.
+    constexpr double stalled_residual = 1e-3;
+    /// Under load or indentation control, the conformity tolerance is at
+    /// most this fraction of Contact/Control tolerance.
+    constexpr double control_conformity_fraction = 0.1;
+    /// A surface node within this relative distance of theta0 is the edge.
+    constexpr double edge_slack = 1e-12;
+  } // namespace IterationControls
+} // namespace rollnip
+
+#endif

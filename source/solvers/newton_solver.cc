@@ -1,0 +1,172 @@
+#include <rollnip/run_errors.h>
+#include <rollnip/solvers/iteration_controls.h>
+#include <rollnip/solvers/newton_solver.h>
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+
+namespace rollnip
+{
+  NewtonSolver::NewtonSolver(const Parameters::NonlinearSolver &parameters,
+                             RollBody                          &body,
+                             LinearSolver                      &linear_solver,
+                             ConditionalOStream                &pcout)
+      : parameters(parameters)
+      , body(body)
+      , linear_solver(linear_solver)
+      , pcout(pcout)
+  {}
+
+  double
+  NewtonSolver::Errors::merit() const
+  {
+    return std::sqrt(e_R * e_R + e_J * e_J);
+  }
+
+  double
+  NewtonSolver::residual_round_off_floor() const
+  {
+    // Stresses of order G summed over the cells: I + grad u loses the
+    // digits of u next to 1, whatever the load.
+    const double G         = body.materials().surface_layer().shear_modulus();
+    const double cell_size = std::sqrt(body.area() / body.n_cells());
+    return IterationControls::round_off_factor *
+           std::numeric_limits<double>::epsilon() * G * cell_size *
+           std::sqrt(double(body.n_dofs()));
+  }
+
+  NewtonSolver::Errors
+  NewtonSolver::measure() const
+  {
+    const auto    &R    = body.residual();
+    const MPI_Comm comm = body.communicator();
+    double         r_p2 = 0, sum_abs = 0;
+    for (const auto i : body.pressure_dofs())
+      {
+        r_p2 += R[i] * R[i];
+        sum_abs += std::abs(R[i]);
+      }
+    r_p2                 = Utilities::MPI::sum(r_p2, comm);
+    const double r_total = R.l2_norm();
+    const double r_u     = std::sqrt(std::max(0., r_total * r_total - r_p2));
+    const double f_ext   = body.external_force().l2_norm();
+    const double scale   = f_ext > 0 ? f_ext : 1.;
+    Errors       e;
+    e.e_R     = r_u / scale;
+    e.floor_R = residual_round_off_floor() / scale;
+    e.e_J     = Utilities::MPI::sum(sum_abs, comm) / body.area();
+    return e;
+  }
+
+  double
+  NewtonSolver::line_search(const TrilinosWrappers::MPI::Vector &update,
+                            const double                         load_fraction,
+                            Errors                              &errors,
+                            double                              &min_J,
+                            bool                                &decreased)
+  {
+    const bool                          check_J = !body.materials().is_linear();
+    const double                        old_merit = errors.merit();
+    const TrilinosWrappers::MPI::Vector base(body.owned_solution());
+    TrilinosWrappers::MPI::Vector       trial(base);
+    double                              alpha = 1;
+    for (unsigned int ls = 0;; ++ls)
+      {
+        trial = base;
+        trial.add(alpha, update);
+        body.set_solution(trial);
+        min_J  = body.assemble(load_fraction, false);
+        errors = measure();
+        decreased =
+          (!check_J || min_J > 0) && std::isfinite(errors.e_R) &&
+          errors.merit() <
+            (1. - IterationControls::sufficient_decrease * alpha) * old_merit;
+        if (decreased || !parameters.line_search ||
+            ls >= parameters.max_line_search_steps)
+          return alpha;
+        alpha *= IterationControls::line_search_factor;
+      }
+  }
+
+  bool
+  NewtonSolver::solve(const double load_fraction, const unsigned int step)
+  {
+    const TrilinosWrappers::MPI::Vector start(body.owned_solution());
+    TrilinosWrappers::MPI::Vector       update(start);
+    // J <= 0 means an inverted cell in finite strain; in linear theory J
+    // of I + grad u has no meaning and is not checked.
+    const bool check_J = !body.materials().is_linear();
+    double     min_J   = body.assemble(load_fraction, true);
+    Errors     errors  = measure();
+    auto       broken  = [&]() {
+      return (check_J && !(min_J > 0)) || !std::isfinite(errors.e_R);
+    };
+    if (parameters.verbose)
+      pcout << "      iter  |R_u|/|F|     sum|J-1|/A    |du|/|u|    step"
+            << std::endl;
+
+    // Iterations in a row whose line search found no decrease: a few mean
+    // the iteration is stuck (beyond a limit load, say), and the step is
+    // given up at once rather than after the full iteration budget.
+    unsigned int stalled = 0;
+    for (unsigned int it = 1; it <= parameters.max_iterations && !broken();
+         ++it)
+      {
+        TrilinosWrappers::MPI::Vector rhs(body.residual());
+        rhs *= -1.;
+        update = 0;
+        try
+          {
+            linear_solver.factorize(body);
+            linear_solver.solve(body, rhs, update);
+          }
+        catch (const std::exception &e)
+          {
+            // Only the iterative solver fails softly (too many iterations):
+            // the step is cut back like a failed Newton iteration.
+            if (!linear_solver.is_iterative())
+              throw;
+            pcout << "      (" << one_line_message(e) << ")" << std::endl;
+            break;
+          }
+
+        bool         decreased = false;
+        const double alpha =
+          line_search(update, load_fraction, errors, min_J, decreased);
+        const double u_norm = body.owned_solution().l2_norm();
+        const double e_u =
+          alpha * update.l2_norm() / (u_norm > 0 ? u_norm : 1.);
+        records.push_back(
+          {step, it, load_fraction, errors.e_R, errors.e_J, e_u, alpha});
+        if (parameters.verbose)
+          pcout << "      " << std::setw(4) << it << std::scientific
+                << std::setprecision(3) << "  " << errors.e_R << "     "
+                << errors.e_J << "     " << e_u << "   " << std::fixed
+                << std::setprecision(3) << alpha << std::endl;
+        if (broken())
+          break;
+        stalled = decreased ? 0 : stalled + 1;
+        if (errors.e_R < parameters.residual_tolerance + errors.floor_R &&
+            errors.e_J < parameters.constraint_tolerance &&
+            (e_u < parameters.increment_tolerance ||
+             errors.e_R < IterationControls::residual_only_convergence *
+                            parameters.residual_tolerance))
+          {
+            last_iterations = it;
+            last_residual   = errors.e_R;
+            return true;
+          }
+        if (parameters.line_search &&
+            stalled >= IterationControls::stuck_iterations)
+          break;
+        // The tangent at the accepted point, for the next iteration.
+        min_J = body.assemble(load_fraction, true);
+      }
+
+    body.set_solution(start);
+    if (check_J && !(min_J > 0))
+      pcout << "      (J <= 0 somewhere: the cover would invert)" << std::endl;
+    return false;
+  }
+} // namespace rollnip
