@@ -229,14 +229,24 @@ namespace rollnip
       declare_documented(prm,
                          "C1",
                          "0.25",
-                         Patterns::Double(),
-                         "Mooney-Rivlin constant C1 [MPa]");
+                         Patterns::List(Patterns::Double(), 1),
+                         "Mooney-Rivlin constant C1 [MPa]; for a layered "
+                         "cover one value per layer, from the core out");
       declare_documented(prm,
                          "C2",
                          "0.25",
-                         Patterns::Double(),
-                         "Mooney-Rivlin constant C2 [MPa]; in-plane results "
-                         "depend on C1 + C2 only");
+                         Patterns::List(Patterns::Double(), 1),
+                         "Mooney-Rivlin constant C2 [MPa], one value per "
+                         "layer like C1; in-plane results depend on C1 + C2 "
+                         "only");
+      declare_documented(prm,
+                         "Layer thicknesses",
+                         "",
+                         Patterns::List(Patterns::Double(), 0),
+                         "Thickness of every layer of a layered cover [mm], "
+                         "from the core out, summing to Outer radius - Inner "
+                         "radius; empty: one layer. The mesh puts a cell "
+                         "boundary on every interface");
       declare_documented(prm,
                          "Theory",
                          "nonlinear",
@@ -251,9 +261,19 @@ namespace rollnip
     void
     Material::parse(ParameterHandler &prm)
     {
+      auto numbers = [&](const std::string &key) {
+        std::vector<double> values;
+        for (const auto &v : Utilities::split_string_list(prm.get(key)))
+          values.push_back(Utilities::string_to_double(v));
+        return values;
+      };
       prm.enter_subsection("Material");
-      C1 = prm.get_double("C1");
-      C2 = prm.get_double("C2");
+      layer_C1          = numbers("C1");
+      layer_C2          = numbers("C2");
+      layer_thicknesses = numbers("Layer thicknesses");
+      C1                = layer_C1.back();
+      C2 =
+        layer_C2.size() == layer_C1.size() ? layer_C2.back() : layer_C2.front();
       theory =
         prm.get("Theory") == "linear" ? Theory::linear : Theory::nonlinear;
       prm.leave_subsection();
@@ -844,26 +864,10 @@ namespace rollnip
                   ExcMessage("Geometry/Sector angle must lie in (0, 180] deg, "
                              "got " +
                              number(geometry.sector_angle / degree) + " deg"));
-      AssertThrow(material.C1 + material.C2 > 0,
-                  ExcMessage("Material/C1 + C2 must be positive (shear "
-                             "modulus 2 (C1 + C2)), got C1 = " +
-                             std::to_string(material.C1) + " MPa, C2 = " +
-                             std::to_string(material.C2) + " MPa"));
-      AssertThrow(material.C1 >= 0 && material.C2 >= 0,
-                  ExcMessage("Material/C1 and C2 must not be negative "
-                             "(Mooney-Rivlin stability), got C1 = " +
-                             std::to_string(material.C1) + " MPa, C2 = " +
-                             std::to_string(material.C2) + " MPa"));
+      validate_material();
       AssertThrow(mesh.source == MeshSource::builtin || !mesh.mesh_file.empty(),
                   ExcMessage("Mesh/Mesh file must name a gmsh file when "
                              "Mesh/Source = gmsh"));
-      const double G = 2 * (material.C1 + material.C2);
-      AssertThrow(G >= 1e-6 && G <= 1e9,
-                  ExcMessage("Material/C1 + C2: the shear modulus 2 (C1 + C2) "
-                             "= " +
-                             number(G) +
-                             " MPa is outside 1e-6 to 1e9 MPa (a unit "
-                             "mistake? C1 and C2 are in MPa)"));
       // The load expression must parse and be finite on the whole arc.
       PressureLoad check(load, geometry);
       check.check_finite();
@@ -913,6 +917,72 @@ namespace rollnip
                                    "positive (and, for nip angles, below "
                                    "Geometry/Sector angle)"));
         }
+    }
+
+    void
+    AllParameters::validate_material() const
+    {
+      const auto        &m = material;
+      const unsigned int n = m.n_layers();
+      AssertThrow(m.layer_C2.size() == n,
+                  ExcMessage("Material/C2 has " +
+                             std::to_string(m.layer_C2.size()) +
+                             " value(s) but Material/C1 has " +
+                             std::to_string(n) + ": give one per layer"));
+      AssertThrow(m.layer_thicknesses.empty() ||
+                    m.layer_thicknesses.size() == n,
+                  ExcMessage("Material/Layer thicknesses has " +
+                             std::to_string(m.layer_thicknesses.size()) +
+                             " value(s) but Material/C1 has " +
+                             std::to_string(n) + ": give one per layer"));
+      AssertThrow(n == 1 || !m.layer_thicknesses.empty(),
+                  ExcMessage("Material/C1 has " + std::to_string(n) +
+                             " values (layers) but Material/Layer "
+                             "thicknesses is empty: give the thickness of "
+                             "every layer [mm]"));
+      const std::string which = n == 1 ? "" : " of layer ";
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          const double      C1 = m.layer_C1[j], C2 = m.layer_C2[j];
+          const std::string layer = n == 1 ? "" : which + std::to_string(j + 1);
+          const std::string got   = ", got C1 = " + std::to_string(C1) +
+                                  " MPa, C2 = " + std::to_string(C2) + " MPa";
+          AssertThrow(C1 + C2 > 0,
+                      ExcMessage("Material/C1 + C2" + layer +
+                                 " must be positive (shear modulus 2 (C1 + "
+                                 "C2))" +
+                                 got));
+          AssertThrow(C1 >= 0 && C2 >= 0,
+                      ExcMessage("Material/C1 and C2" + layer +
+                                 " must not be negative (Mooney-Rivlin "
+                                 "stability)" +
+                                 got));
+          const double G = 2 * (C1 + C2);
+          AssertThrow(G >= 1e-6 && G <= 1e9,
+                      ExcMessage(
+                        "Material/C1 + C2" + layer +
+                        ": the shear modulus 2 (C1 + C2) = " + number(G) +
+                        " MPa is outside 1e-6 to 1e9 MPa (a unit "
+                        "mistake? C1 and C2 are in MPa)"));
+        }
+      if (m.layer_thicknesses.empty())
+        return;
+      const double h   = geometry.outer_radius - geometry.inner_radius;
+      double       sum = 0;
+      for (const double t : m.layer_thicknesses)
+        {
+          AssertThrow(t > 0,
+                      ExcMessage("Material/Layer thicknesses must be "
+                                 "positive, got " +
+                                 number(t) + " mm"));
+          sum += t;
+        }
+      AssertThrow(std::abs(sum - h) <= 1e-9 * h,
+                  ExcMessage("Material/Layer thicknesses sum to " +
+                             number(sum) +
+                             " mm, but the cover is Outer "
+                             "radius - Inner radius = " +
+                             number(h) + " mm thick"));
     }
 
     void

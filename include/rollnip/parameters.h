@@ -91,9 +91,20 @@ namespace rollnip
 
     struct Material
     {
-      double C1; ///< [MPa]
-      double C2; ///< [MPa]
-      Theory theory;
+      /// Mooney-Rivlin constants of every layer of the cover, from the
+      /// core out [MPa]; one entry for an unlayered cover.
+      std::vector<double> layer_C1, layer_C2;
+      /// Thickness of every layer [mm]; empty: one layer, the whole cover.
+      std::vector<double> layer_thicknesses;
+      double              C1; ///< of the outer layer [MPa]
+      double              C2; ///< of the outer layer [MPa]
+      Theory              theory;
+
+      unsigned int
+      n_layers() const
+      {
+        return layer_C1.size();
+      }
 
       static void
       declare(ParameterHandler &prm);
@@ -297,6 +308,9 @@ namespace rollnip
       /// Nip fitting against the mesh and the values (validate()).
       void
       validate_mesh() const;
+      /// The constants and thicknesses of the layers of the cover.
+      void
+      validate_material() const;
       /// Output directory, the number of nips and the size (validate()).
       void
       validate_output() const;

@@ -5,6 +5,7 @@
 #include <deal.II/grid/manifold_lib.h>
 
 #include <rollnip/boundary_ids.h>
+#include <rollnip/geometry/cover_layers.h>
 #include <rollnip/geometry/nip_fitted_mesh.h>
 #include <rollnip/geometry/roll_mesh.h>
 
@@ -110,14 +111,13 @@ namespace rollnip
   {
     const auto        &g = parameters.geometry;
     const auto        &m = parameters.mesh;
-    const double       h = g.outer_radius - g.inner_radius;
-    const unsigned int n = m.radial_cells;
+    const unsigned int n = radial_steps(parameters, 1.).size();
     // The surface cell of the user's grading, and the arc of a coarse
     // nip cell: a small nip gets thinner cells under it, so that its
     // cells are not flat slivers (which stiffen Q1-P0). A smooth minimum
     // of the two, bounded below by a tenth of the first, keeps P(theta0)
     // smooth.
-    const double w_user = graded_steps(n, h, m.radial_grading).back();
+    const double w_user = radial_steps(parameters, m.radial_grading).back();
     const double w_arc  = g.outer_radius * theta0 / n_nip_cells;
     const double w_low  = 0.1 * w_user;
     const double w_surface =
@@ -129,10 +129,10 @@ namespace rollnip
     for (unsigned int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i)
       {
         const double mid = 0.5 * (lo + hi);
-        (graded_steps(n, h, mid).back() < w_surface ? lo : hi) = mid;
+        (radial_steps(parameters, mid).back() < w_surface ? lo : hi) = mid;
       }
     std::vector<double> radii(n + 1, g.inner_radius);
-    const auto          steps = graded_steps(n, h, 0.5 * (lo + hi));
+    const auto          steps = radial_steps(parameters, 0.5 * (lo + hi));
     for (unsigned int k = 0; k < n; ++k)
       radii[k + 1] = radii[k] + steps[k];
     radii[n] = g.outer_radius; // exactly: the surface
@@ -156,16 +156,26 @@ namespace rollnip
   NipFittedMesh::build(parallel::distributed::Triangulation<dim> &triangulation,
                        const double                               theta0)
   {
-    const auto &m = parameters.mesh;
+    const auto        &m        = parameters.mesh;
+    const unsigned int n_radial = radial_steps(parameters, 1.).size();
     // The logical square [0, 1]^2 with uniform coarse cells, refined while
     // flat: the fine vertices are the exact tensor grid of the coarse one.
     Triangulation<dim> coarse;
     GridGenerator::subdivided_hyper_rectangle(
       coarse,
-      std::vector<unsigned int>{m.radial_cells, n_cells},
+      std::vector<unsigned int>{n_radial, n_cells},
       Point<dim>(0., 0.),
       Point<dim>(1., 1.),
       /*colorize=*/true);
+    // The layer of each coarse cell, from its radial index.
+    const std::vector<unsigned int> counts = layer_cell_counts(parameters);
+    for (const auto &cell : coarse.active_cell_iterators())
+      {
+        unsigned int k = std::floor(cell->center()[0] * n_radial), layer = 0;
+        while (k >= counts[layer])
+          k -= counts[layer++];
+        cell->set_material_id(layer);
+      }
     triangulation.copy_triangulation(coarse);
     triangulation.refine_global(m.global_refinements);
     logical = triangulation.get_vertices();

@@ -6,6 +6,7 @@
 
 #include <rollnip/boundary_ids.h>
 #include <rollnip/cost_estimate.h>
+#include <rollnip/geometry/cover_layers.h>
 #include <rollnip/geometry/roll_mesh.h>
 
 #include <cmath>
@@ -76,9 +77,7 @@ namespace rollnip
       const auto                            &g     = parameters.geometry;
       const auto                            &m     = parameters.mesh;
       const std::vector<std::vector<double>> steps = {
-        graded_steps(m.radial_cells,
-                     g.outer_radius - g.inner_radius,
-                     m.radial_grading),
+        radial_steps(parameters, m.radial_grading),
         coarse_circumferential_steps(parameters)};
       GridGenerator::subdivided_hyper_rectangle(coarse,
                                                 steps,
@@ -97,6 +96,7 @@ namespace rollnip
         },
         coarse);
       coarse.set_all_manifold_ids(ManifoldIds::polar);
+      set_layer_ids(parameters, coarse);
     }
 
     void
@@ -226,9 +226,10 @@ namespace rollnip
     if (parameters.mesh.source == Parameters::MeshSource::gmsh)
       {
         make_from_gmsh(parameters, coarse);
-        check_mesh(parameters,
-                   coarse,
-                   "Mesh/Mesh file '" + parameters.mesh.mesh_file + "'");
+        const std::string origin =
+          "Mesh/Mesh file '" + parameters.mesh.mesh_file + "'";
+        check_mesh(parameters, coarse, origin);
+        check_layer_ids(parameters, coarse, origin);
       }
     else
       {

@@ -219,6 +219,21 @@ namespace rollnip
           out << p.theta * deg << ',' << p.sigma_rr << ',' << p.sigma_rtheta
               << ',' << p.sigma_thetatheta << ',' << p.sigma_zz << '\n';
       });
+    // Interface j lies between layers j and j + 1, counted from the core.
+    for (unsigned int j = 0; j < data.interfaces.size(); ++j)
+      write_atomically(directory + "/interface_" + std::to_string(j + 1) +
+                         suffix + ".csv",
+                       [&](std::ostream &out) {
+                         out << "theta_deg,sigma_rr_MPa,sigma_rtheta_MPa,"
+                                "sigma_thetatheta_inner_MPa,"
+                                "sigma_thetatheta_outer_MPa\n"
+                             << std::setprecision(10);
+                         for (const auto &p : data.interfaces[j])
+                           out << p.theta * deg << ',' << p.sigma_rr << ','
+                               << p.sigma_rtheta << ','
+                               << p.sigma_thetatheta_inner << ','
+                               << p.sigma_thetatheta_outer << '\n';
+                       });
   }
 
   void

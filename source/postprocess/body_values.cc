@@ -123,6 +123,66 @@ namespace rollnip
               -(n * traction),
               t * traction};
     }
+
+    /// The interface nodes of a layered cover, gathered on rank 0: each
+    /// side's stresses come from its own cells and are averaged per node
+    /// and side.
+    std::vector<std::vector<InterfacePoint>>
+    interface_data(const RollBody &body)
+    {
+      const unsigned int n_interfaces = body.materials().n_layers() - 1;
+      if (n_interfaces == 0)
+        return {};
+      FEFaceValues<dim>     fv(body.mapping(),
+                           body.fe(),
+                           QTrapezoid<dim - 1>(),
+                           update_values | update_gradients |
+                             update_normal_vectors | update_quadrature_points);
+      FaceVertexValues      values;
+      std::vector<NodeSums> inner(n_interfaces), outer(n_interfaces);
+      for (const auto &cell : body.dofs().active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto f : cell->face_indices())
+            {
+              if (cell->face(f)->at_boundary())
+                continue;
+              const unsigned int own   = cell->material_id();
+              const unsigned int other = cell->neighbor(f)->material_id();
+              if (own == other)
+                continue;
+              fv.reinit(cell, f);
+              values.read(fv, body.solution());
+              NodeSums &sums = own < other ? inner[own] : outer[other];
+              for (unsigned int v = 0; v < 2; ++v)
+                {
+                  const Point<dim> &X = fv.quadrature_point(v);
+                  const StressState s =
+                    evaluate_stress_state(body.materials()[own],
+                                          values.grad_u[v],
+                                          values.q[v],
+                                          X,
+                                          values.u[v]);
+                  accumulate(
+                    sums,
+                    reference_angle(X),
+                    {reference_angle(X), s.sigma_rr, s.sigma_rt, s.sigma_tt});
+                }
+            }
+      std::vector<std::vector<InterfacePoint>> interfaces(n_interfaces);
+      const MPI_Comm                           comm = body.communicator();
+      for (unsigned int j = 0; j < n_interfaces; ++j)
+        {
+          const auto in  = gather_rows(inner[j], 4, comm);
+          const auto out = gather_rows(outer[j], 4, comm);
+          for (unsigned int k = 0; k < std::min(in.size(), out.size()); ++k)
+            interfaces[j].push_back({in[k][0],
+                                     0.5 * (in[k][1] + out[k][1]),
+                                     0.5 * (in[k][2] + out[k][2]),
+                                     in[k][3],
+                                     out[k][3]});
+        }
+      return interfaces;
+    }
   } // namespace
 
   double
@@ -246,7 +306,8 @@ namespace rollnip
         {r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7], r[8], r[9]});
     for (const auto &r : gather_rows(bond, 5, comm))
       data.bond.push_back({r[0], r[1], r[2], r[3], r[4]});
-    data.extremes = field_extremes(body);
+    data.interfaces = interface_data(body);
+    data.extremes   = field_extremes(body);
     return data;
   }
 

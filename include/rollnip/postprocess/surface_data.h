@@ -29,6 +29,16 @@ namespace rollnip
     double sigma_rr, sigma_rtheta, sigma_thetatheta, sigma_zz;
   };
 
+  /// One node of an interface between two layers. The traction
+  /// components are continuous across a bonded interface and averaged over
+  /// both sides; the hoop stress jumps and is given on each side [MPa].
+  struct InterfacePoint
+  {
+    double theta; ///< reference angle [rad]
+    double sigma_rr, sigma_rtheta;
+    double sigma_thetatheta_inner, sigma_thetatheta_outer;
+  };
+
   /// Extremes of the bond-surface stresses [MPa]; all 0 for no points
   /// (ranks other than 0 hold none).
   struct BondExtremes
@@ -72,7 +82,9 @@ namespace rollnip
   {
     std::vector<OuterSurfacePoint> outer;
     std::vector<BondSurfacePoint>  bond;
-    FieldExtremes                  extremes;
+    /// The interfaces of a layered cover, from the core out.
+    std::vector<std::vector<InterfacePoint>> interfaces;
+    FieldExtremes                            extremes;
   };
 } // namespace rollnip
 

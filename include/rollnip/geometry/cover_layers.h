@@ -1,0 +1,54 @@
+#ifndef rollnip_geometry_cover_layers_h
+#define rollnip_geometry_cover_layers_h
+
+#include <deal.II/grid/tria.h>
+
+#include <rollnip/global.h>
+#include <rollnip/parameters.h>
+
+#include <vector>
+
+namespace rollnip
+{
+  /**
+   * The radial layout of a (layered) cover: where its interfaces are, how
+   * many coarse radial cells each layer gets, and which layer a cell is in.
+   * Both mesh generators take their radial cells from here, so that every
+   * interface is a cell boundary.
+   */
+
+  /// Radii of the layer boundaries [mm], from R1 to R0 (layers + 1).
+  std::vector<double>
+  layer_radii(const Parameters::AllParameters &parameters);
+
+  /// Coarse radial cells of every layer: in proportion to the thickness,
+  /// at least one each, Mesh/Radial cells in all (or one per layer if
+  /// there are more layers).
+  std::vector<unsigned int>
+  layer_cell_counts(const Parameters::AllParameters &parameters);
+
+  /// The coarse radial cell widths [mm] from R1 to R0: one geometric
+  /// growth factor throughout, chosen so that the last cell over the first
+  /// would be @p ratio on an unlayered cover, each layer filled exactly.
+  std::vector<double>
+  radial_steps(const Parameters::AllParameters &parameters, const double ratio);
+
+  /// The layer (0 on the core) that radius @p r [mm] lies in.
+  unsigned int
+  layer_at_radius(const std::vector<double> &radii, const double r);
+
+  /// Sets every cell's material id to the layer its centre lies in.
+  void
+  set_layer_ids(const Parameters::AllParameters &parameters,
+                Triangulation<dim>              &triangulation);
+
+  /// Throws a one-line message naming @p origin if a cell's material id is
+  /// not a layer or its centre lies outside that layer (gmsh meshes of a
+  /// layered cover carry the layer as physical surface tag 0, 1, ...).
+  void
+  check_layer_ids(const Parameters::AllParameters &parameters,
+                  const Triangulation<dim>        &triangulation,
+                  const std::string               &origin);
+} // namespace rollnip
+
+#endif
