@@ -7,6 +7,7 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <rollnip/boundary_ids.h>
+#include <rollnip/engineering_inputs.h>
 #include <rollnip/loading/pressure_load.h>
 #include <rollnip/output/atomic_file.h>
 #include <rollnip/postprocess/stress_postprocessor.h>
@@ -276,6 +277,7 @@ namespace rollnip
         out << "stopped_because = " << status.message << '\n';
       out << "theory = " << (material.is_linear() ? "linear" : "nonlinear")
           << '\n'
+          << EngineeringInputs::summary_entries(parameters)
           << "element = " << fe->get_name() << '\n'
           << "cells = " << triangulation.n_global_active_cells() << '\n'
           << "dofs = " << dof_handler.n_dofs() << '\n'
