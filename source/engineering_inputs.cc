@@ -258,9 +258,9 @@ namespace rollnip
       if (c.mode == Parameters::ContactMode::load && c.load_unit.name != "N/mm")
         {
           s << "Contact: line loads";
-          for (const double v : c.values)
-            s << ' ' << v / c.load_unit.to_n_per_mm << ' ' << c.load_unit.name
-              << " = " << v << " N/mm;";
+          for (unsigned int i = 0; i < c.values.size(); ++i)
+            s << (i ? ", " : " ") << c.values[i] / c.load_unit.to_n_per_mm
+              << ' ' << c.load_unit.name << " = " << c.values[i] << " N/mm";
           s << '\n';
         }
       return s.str();

@@ -49,6 +49,7 @@ namespace rollnip
       const double E     = 6 * (p.material.C1 + p.material.C2);
       const bool   dwell = c.surface_speed > 0;
       std::cout << std::endl
+                << std::defaultfloat
                 << "Nip report (E = " << std::setprecision(4) << E << " MPa"
                 << (p.material.hardness_modulus > 0
                       ? ", an estimate from hardness " +
