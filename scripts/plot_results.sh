@@ -24,6 +24,8 @@
 #                                indenter, near the nip, equal scales (Fig. 7)
 #   nip_characteristic           P against the half-chord b: nonlinear, linear, Hertz,
 #                                thin layer, log-log
+#   nip_report                   nip width 2b and peak and mean pressure against the
+#                                line load in the run's unit, linear axes (nip_report.csv)
 # A figure whose tables are missing (e.g. no contact) is skipped with a note.
 #
 # Environment:
@@ -485,6 +487,38 @@ EOF
   fi
 else
   note "skipping nip_characteristic: no nip_characteristic.csv, or no rows in it"
+fi
+
+# ------------------------------------------------------- f. the nip report
+report="$outdir/nip_report.csv"
+if [ -f "$report" ] && [ "$(grep -c . "$report")" -ge 2 ]; then
+  # The load column names its unit: line_load_kN_per_m, ..._N_per_mm, ..._pli.
+  load_name="$(head -n 1 "$report" | cut -d, -f2)"
+  unit="$(printf '%s' "${load_name#line_load_}" | sed 's/_per_/\//')"
+  cw="$(column_of "$report" nip_width_2b_mm)"
+  cpk="$(column_of "$report" peak_pressure_MPa)"
+  cmn="$(column_of "$report" mean_pressure_MPa)"
+  style="linespoints"
+  [ "$(grep -c . "$report")" -gt 2 ] || style="points"
+  fq="$(gq "$report")"
+  render nip_report 900 620 <<EOF
+set title 'Nip report: nip width and pressure against line load'
+set xlabel 'line load ($unit)'
+set ylabel 'nip width 2b, deformed (mm)'
+set y2label 'pressure (MPa)'
+set xrange [0:*]
+set yrange [0:*]
+set y2range [0:*]
+set ytics nomirror
+set y2tics
+set grid
+set key top left box opaque
+plot $fq skip 1 using 2:$cw with $style lw 2 pt 7 lc rgb '#1f77b4' title 'nip width 2b (left axis)', \\
+     $fq skip 1 using 2:$cpk axes x1y2 with $style lw 2 dt 2 pt 5 lc rgb '#d62728' title 'peak pressure (right axis)', \\
+     $fq skip 1 using 2:$cmn axes x1y2 with $style lw 1.5 dt 4 pt 9 lc rgb '#2ca02c' title 'mean pressure P/2b (right axis)'
+EOF
+else
+  note "skipping nip_report: no nip_report.csv, or no rows in it"
 fi
 
 [ "${#written[@]}" -gt 0 ] || die "nothing to plot in '$outdir'"

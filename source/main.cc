@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <rollnip/contact/nip_study.h>
+#include <rollnip/engineering_inputs.h>
 #include <rollnip/geometry/adaptive_grading.h>
 #include <rollnip/interrupt.h>
 #include <rollnip/parameters.h>
@@ -113,6 +114,8 @@ main(int argc, char **argv)
   return run_guarded(root, [&]() {
     Parameters::AllParameters parameters;
     parameters.read(file);
+    if (root)
+      std::cout << EngineeringInputs::describe(parameters);
     if (!parameters.study.levels.empty() && !validate_only)
       return run_refinement_study(parameters);
     if (!validate_only)

@@ -1,6 +1,7 @@
 #include <deal.II/base/numbers.h>
 
 #include <rollnip/cost_estimate.h>
+#include <rollnip/engineering_inputs.h>
 #include <rollnip/loading/pressure_load.h>
 #include <rollnip/parameters.h>
 
@@ -102,6 +103,7 @@ namespace rollnip
                          Patterns::Double(),
                          "Angle of the modelled sector, measured from the line "
                          "of centres, in (0, 180] [deg]");
+      EngineeringInputs::declare_geometry(prm);
       prm.leave_subsection();
     }
 
@@ -112,6 +114,7 @@ namespace rollnip
       inner_radius = prm.get_double("Inner radius");
       outer_radius = prm.get_double("Outer radius");
       sector_angle = prm.get_double("Sector angle") * degree;
+      EngineeringInputs::parse_geometry(prm, *this);
       prm.leave_subsection();
     }
 
@@ -255,6 +258,7 @@ namespace rollnip
                          "stepping; linear: small strain with shear modulus "
                          "G = 2 (C1 + C2), whole load in one step on the "
                          "undeformed surface");
+      EngineeringInputs::declare_material(prm);
       prm.leave_subsection();
     }
 
@@ -276,6 +280,7 @@ namespace rollnip
         layer_C2.size() == layer_C1.size() ? layer_C2.back() : layer_C2.front();
       theory =
         prm.get("Theory") == "linear" ? Theory::linear : Theory::nonlinear;
+      EngineeringInputs::parse_material(prm, *this);
       prm.leave_subsection();
     }
 
@@ -606,7 +611,8 @@ namespace rollnip
                          Patterns::List(Patterns::Double(0.), 1),
                          "The controlled quantity, one nip per value, "
                          "comma-separated (several make a sweep): theta0 "
-                         "[deg], P [N/mm, two-sided] or u0 [mm] by Mode");
+                         "[deg], P [Load unit, two-sided] or u0 [mm] by "
+                         "Mode");
       declare_documented(prm,
                          "Indenter radius",
                          default_indenter_radius,
@@ -638,6 +644,7 @@ namespace rollnip
                          Patterns::Bool(),
                          "Also solve each nip (same theta0) with the linear "
                          "theory and report it beside the nonlinear one");
+      EngineeringInputs::declare_contact(prm);
       prm.leave_subsection();
     }
 
@@ -700,6 +707,7 @@ namespace rollnip
       control_tolerance = prm.get_double("Control tolerance");
       max_iterations    = prm.get_integer("Maximum iterations");
       compare_linear    = prm.get_bool("Compare with linear theory");
+      EngineeringInputs::parse_contact(prm, *this);
       prm.leave_subsection();
     }
 
@@ -868,6 +876,7 @@ namespace rollnip
       AssertThrow(mesh.source == MeshSource::builtin || !mesh.mesh_file.empty(),
                   ExcMessage("Mesh/Mesh file must name a gmsh file when "
                              "Mesh/Source = gmsh"));
+      EngineeringInputs::check_modulus(material);
       // The load expression must parse and be finite on the whole arc.
       PressureLoad check(load, geometry);
       check.check_finite();

@@ -5,6 +5,7 @@
 
 #include <rollnip/boundary_ids.h>
 #include <rollnip/global.h>
+#include <rollnip/loading/line_load_unit.h>
 
 #include <array>
 #include <string>
@@ -25,6 +26,8 @@ namespace rollnip
       double inner_radius; ///< R1 [mm]
       double outer_radius; ///< R0 [mm]
       double sector_angle; ///< modelled sector [rad], in (0, pi]
+      /// Given as Roll diameter and Cover thickness (engineering_inputs.md).
+      bool from_diameters = false;
 
       static void
       declare(ParameterHandler &prm);
@@ -105,6 +108,11 @@ namespace rollnip
       {
         return layer_C1.size();
       }
+      /// Young's modulus [MPa] estimated from Material/Hardness, which then
+      /// set C1 and C2 (doc/engineering_inputs.md); 0: C1, C2 were given.
+      double hardness_modulus = 0;
+      /// The reading and the relation used, e.g. "60 Shore A, Gent (1958)".
+      std::string hardness_description;
 
       static void
       declare(ParameterHandler &prm);
@@ -237,6 +245,11 @@ namespace rollnip
       double              control_tolerance; ///< relative, on P or u0
       unsigned int        max_iterations;
       bool                compare_linear;
+      /// The unit of line loads in Values (load mode) and in the nip
+      /// report; Values are converted to N/mm when read.
+      LineLoadUnit load_unit;
+      /// Surface speed of the roll [m/min] for the dwell time; 0: none.
+      double surface_speed = 0;
       /// Contact/Values or Indenter radius differ from their defaults:
       /// with Mode = none they would be silently ignored.
       bool keys_set_without_mode = false;

@@ -2,6 +2,7 @@
 
 #include <rollnip/boundary_ids.h>
 #include <rollnip/contact/nip_control.h>
+#include <rollnip/contact/nip_report.h>
 #include <rollnip/contact/nip_study.h>
 #include <rollnip/interrupt.h>
 #include <rollnip/material/material_table.h>
@@ -305,6 +306,7 @@ namespace rollnip
       }
 
     write_nip_characteristic(rows, with_linear, top);
+    write_nip_report(rows, parameters, top);
     if (rows_out)
       *rows_out = rows;
     if (!failure.empty())

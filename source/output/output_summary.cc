@@ -1,6 +1,7 @@
 #include <deal.II/base/multithread_info.h>
 
 #include <rollnip/boundary_ids.h>
+#include <rollnip/engineering_inputs.h>
 #include <rollnip/output/atomic_file.h>
 #include <rollnip/output/output_writer.h>
 
@@ -26,6 +27,7 @@ namespace rollnip
       };
       out << "theory = "
           << (body.materials().is_linear() ? "linear" : "nonlinear") << '\n'
+          << EngineeringInputs::summary_entries(parameters)
           << "element = " << body.fe().get_name() << '\n'
           << "cells = " << body.n_cells() << '\n'
           << "dofs = " << body.n_dofs() << '\n'

@@ -1,0 +1,121 @@
+#include <deal.II/base/mpi.h>
+
+#include <rollnip/contact/nip_report.h>
+#include <rollnip/material/material_table.h>
+#include <rollnip/output/atomic_file.h>
+
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace rollnip
+{
+  double
+  dwell_time_ms(const double width, const double speed)
+  {
+    // v [m/min] = v / 60 [mm/ms].
+    return width / (speed / 60.);
+  }
+
+  namespace
+  {
+    /// One nip's numbers in the report's units.
+    struct ReportRow
+    {
+      double load_user, load, width, u0, peak, mean, dwell;
+    };
+
+    ReportRow
+    report_row(const NipRow &r, const Parameters::Contact &c)
+    {
+      const ContactResult &n = r.nonlinear;
+      ReportRow            row;
+      row.load      = n.nip_load;
+      row.load_user = n.nip_load / c.load_unit.to_n_per_mm;
+      row.width     = 2 * n.half_chord;
+      row.u0        = n.indentation;
+      row.peak      = n.peak_pressure;
+      // P is the two-sided load: the mean over the full width 2b.
+      row.mean = n.nip_load / row.width;
+      row.dwell =
+        c.surface_speed > 0 ? dwell_time_ms(row.width, c.surface_speed) : 0;
+      return row;
+    }
+
+    void
+    print_report(const std::vector<ReportRow>    &rows,
+                 const Parameters::AllParameters &p)
+    {
+      const auto  &c     = p.contact;
+      const double E     = 3 * surface_shear_modulus(p.material);
+      const bool   dwell = c.surface_speed > 0;
+      std::cout << std::endl
+                << std::defaultfloat
+                << "Nip report (E = " << std::setprecision(4) << E << " MPa"
+                << (p.material.hardness_modulus > 0
+                      ? ", an estimate from hardness " +
+                          p.material.hardness_description
+                      : ", from C1 and C2");
+      if (dwell)
+        std::cout << "; surface speed " << c.surface_speed << " m/min";
+      std::cout << ")" << std::endl
+                << std::setw(16) << "load [" + c.load_unit.name + "]"
+                << "  width 2b [mm]  u0 [mm]  peak p [MPa]  mean p [MPa]"
+                << (dwell ? "  dwell [ms]" : "") << std::endl;
+      for (const auto &r : rows)
+        {
+          std::cout << std::fixed << std::setprecision(3) << std::setw(16)
+                    << r.load_user << std::setw(15) << r.width << std::setw(9)
+                    << r.u0 << std::setw(14) << r.peak << std::setw(14)
+                    << r.mean;
+          if (dwell)
+            std::cout << std::setw(12) << r.dwell;
+          std::cout << std::defaultfloat << std::endl;
+        }
+    }
+
+    void
+    write_report_csv(const std::vector<ReportRow>    &rows,
+                     const Parameters::AllParameters &p,
+                     const std::string               &file)
+    {
+      const auto  &c        = p.contact;
+      const double E        = 3 * surface_shear_modulus(p.material);
+      const bool   dwell    = c.surface_speed > 0;
+      const bool   estimate = p.material.hardness_modulus > 0;
+      write_atomically(file, [&](std::ostream &out) {
+        out << "nip,line_load_" << c.load_unit.column_suffix()
+            << ",line_load_N_per_mm,nip_width_2b_mm,indentation_u0_mm,"
+               "peak_pressure_MPa,mean_pressure_MPa,"
+            << (dwell ? "surface_speed_m_per_min,dwell_time_ms," : "")
+            << "youngs_modulus_E_MPa,E_estimated_from_hardness\n"
+            << std::setprecision(10);
+        for (unsigned int i = 0; i < rows.size(); ++i)
+          {
+            const ReportRow &r = rows[i];
+            out << i + 1 << ',' << r.load_user << ',' << r.load << ','
+                << r.width << ',' << r.u0 << ',' << r.peak << ',' << r.mean
+                << ',';
+            if (dwell)
+              out << c.surface_speed << ',' << r.dwell << ',';
+            out << E << ',' << (estimate ? "yes" : "no") << '\n';
+          }
+      });
+    }
+  } // namespace
+
+  void
+  write_nip_report(const std::vector<NipRow>       &rows,
+                   const Parameters::AllParameters &parameters,
+                   const std::string               &top)
+  {
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+      return;
+    std::vector<ReportRow> report;
+    for (const auto &r : rows)
+      report.push_back(report_row(r, parameters.contact));
+    print_report(report, parameters);
+    make_directories(top);
+    write_report_csv(report, parameters, top + "/nip_report.csv");
+  }
+} // namespace rollnip

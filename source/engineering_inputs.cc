@@ -1,0 +1,300 @@
+#include <deal.II/base/mpi.h>
+
+#include <rollnip/engineering_inputs.h>
+#include <rollnip/material/hardness.h>
+#include <rollnip/material/material_table.h>
+
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <sstream>
+
+namespace rollnip
+{
+  namespace EngineeringInputs
+  {
+    namespace
+    {
+      /// An entry whose empty default means "not given".
+      void
+      declare_optional(ParameterHandler  &prm,
+                       const std::string &name,
+                       const std::string &doc)
+      {
+        prm.declare_entry(name, "", Patterns::Anything(), doc);
+      }
+
+      std::string
+      shortest(const double x)
+      {
+        std::ostringstream s;
+        s << x;
+        return s.str();
+      }
+
+      /// The number in entry @p name of subsection @p section (NaN when the
+      /// entry is empty); 'inf' only if @p allow_inf.
+      double
+      optional_number(ParameterHandler  &prm,
+                      const std::string &section,
+                      const std::string &name,
+                      const bool         allow_inf = false)
+      {
+        const std::string text = prm.get(name);
+        if (text.empty())
+          return std::numeric_limits<double>::quiet_NaN();
+        if (allow_inf && (text == "inf" || text == "infinity"))
+          return std::numeric_limits<double>::infinity();
+        std::size_t used  = 0;
+        double      value = 0;
+        try
+          {
+            value = std::stod(text, &used);
+          }
+        catch (...)
+          {
+            used = 0;
+          }
+        AssertThrow(
+          used == text.size() && used > 0 && std::isfinite(value) && value > 0,
+          ExcMessage(section + "/" + name + " must be a positive number" +
+                     (allow_inf ? " or 'inf'" : "") + ", got '" + text + "'"));
+        return value;
+      }
+
+      /// Whether the entry @p name still has the value @p default_value
+      /// (compared as numbers): the other form of an input was not used.
+      bool
+      at_default(ParameterHandler  &prm,
+                 const std::string &name,
+                 const double       default_value)
+      {
+        return std::strtod(prm.get(name).c_str(), nullptr) == default_value;
+      }
+    } // namespace
+
+    void
+    declare_geometry(ParameterHandler &prm)
+    {
+      declare_optional(prm,
+                       "Roll diameter",
+                       "Outer diameter of the covered roll [mm], with Cover "
+                       "thickness instead of Inner radius and Outer radius. "
+                       "Allowed: empty (use the radii) or a positive number");
+      declare_optional(prm,
+                       "Cover thickness",
+                       "Thickness of the rubber cover [mm], with Roll "
+                       "diameter. Allowed: empty or a positive number below "
+                       "half the Roll diameter");
+    }
+
+    void
+    parse_geometry(ParameterHandler &prm, Parameters::Geometry &geometry)
+    {
+      const double D = optional_number(prm, "Geometry", "Roll diameter");
+      const double t = optional_number(prm, "Geometry", "Cover thickness");
+      geometry.from_diameters = !std::isnan(D) || !std::isnan(t);
+      if (!geometry.from_diameters)
+        return;
+      AssertThrow(!std::isnan(D) && !std::isnan(t),
+                  ExcMessage("Geometry/Roll diameter and Geometry/Cover "
+                             "thickness go together: give both"));
+      // The radii's defaults (47.2, 60.7 mm): anything else was set.
+      AssertThrow(at_default(prm, "Inner radius", 47.2) &&
+                    at_default(prm, "Outer radius", 60.7),
+                  ExcMessage("Geometry: give either Roll diameter and Cover "
+                             "thickness or Inner radius and Outer radius, "
+                             "not both"));
+      AssertThrow(t < 0.5 * D,
+                  ExcMessage("Geometry/Cover thickness (" + shortest(t) +
+                             " mm) must be less than half the Roll diameter (" +
+                             shortest(D) + " mm)"));
+      geometry.outer_radius = 0.5 * D;
+      geometry.inner_radius = 0.5 * D - t;
+    }
+
+    void
+    declare_material(ParameterHandler &prm)
+    {
+      declare_optional(
+        prm,
+        "Hardness",
+        "Hardness of the cover on Hardness scale, instead of C1 and C2: "
+        "Young's modulus E is estimated from it (an estimate: see "
+        "doc/engineering_inputs.md) and C1 + C2 = E/6. Allowed: empty (use "
+        "C1, C2) or a number within the scale's range (Shore A 30 to 90, "
+        "IRHD 10 to 95, P&J 12 to 250)");
+      prm.declare_entry("Hardness scale",
+                        "Shore A",
+                        Patterns::Anything(),
+                        "Scale of Hardness. Allowed: Shore A (Gent 1958), "
+                        "IRHD (ISO 48) or P&J (Pusey & Jones, indentation in "
+                        "1/100 mm)");
+      prm.declare_entry("C2/C1 ratio",
+                        "0",
+                        Patterns::Double(0.),
+                        "Split of E/6 between C1 and C2 when Hardness is "
+                        "given; 0 is neo-Hookean (in-plane results depend on "
+                        "C1 + C2 only). Allowed: a number >= 0");
+    }
+
+    void
+    parse_material(ParameterHandler &prm, Parameters::Material &material)
+    {
+      const std::string text = prm.get("Hardness");
+      const auto scale = Hardness::scale_from_string(prm.get("Hardness scale"));
+      material.hardness_modulus = 0;
+      material.hardness_description.clear();
+      if (text.empty())
+        return;
+      AssertThrow(at_default(prm, "C1", 0.25) && at_default(prm, "C2", 0.25),
+                  ExcMessage("Material: give either Hardness or C1 and C2, "
+                             "not both"));
+      std::size_t used  = 0;
+      double      value = std::numeric_limits<double>::quiet_NaN();
+      try
+        {
+          value = std::stod(text, &used);
+        }
+      catch (...)
+        {
+          used = 0;
+        }
+      const Hardness::Range range = Hardness::validity_range(scale);
+      AssertThrow(used == text.size() && value >= range.min &&
+                    value <= range.max,
+                  ExcMessage("Material/Hardness = '" + text + "' " +
+                             Hardness::to_string(scale) +
+                             " is outside the range of its modulus relation, " +
+                             shortest(range.min) + " to " +
+                             shortest(range.max)));
+      const double E = Hardness::youngs_modulus(value, scale);
+      const auto   c =
+        Hardness::mooney_rivlin_from_modulus(E, prm.get_double("C2/C1 ratio"));
+      AssertThrow(material.layer_thicknesses.empty(),
+                  ExcMessage("Material/Hardness describes a one-layer cover: "
+                             "with Layer thicknesses give C1 and C2 per "
+                             "layer"));
+      material.C1                   = c.C1;
+      material.C2                   = c.C2;
+      material.layer_C1             = {c.C1};
+      material.layer_C2             = {c.C2};
+      material.hardness_modulus     = E;
+      material.hardness_description = shortest(value) + " " +
+                                      Hardness::to_string(scale) + ", " +
+                                      Hardness::source(scale);
+    }
+
+    void
+    declare_contact(ParameterHandler &prm)
+    {
+      declare_optional(prm,
+                       "Indenter diameter",
+                       "Diameter of the mating rigid roll [mm] instead of "
+                       "Indenter radius; 'inf' for a flat plane. Allowed: "
+                       "empty (use the radius), a positive number or inf");
+      prm.declare_entry("Load unit",
+                        "N/mm",
+                        Patterns::Anything(),
+                        "Unit of the line loads in Values (Mode = load) and "
+                        "in the nip report. Allowed: N/mm, kN/m (the same "
+                        "number) or pli (pound-force per linear inch, "
+                        "0.17512685 N/mm)");
+      prm.declare_entry("Surface speed",
+                        "0",
+                        Patterns::Double(0.),
+                        "Surface speed of the roll [m/min] for the dwell "
+                        "time 2b / v in the nip report; 0: not reported. "
+                        "Allowed: a number >= 0");
+    }
+
+    void
+    parse_contact(ParameterHandler &prm, Parameters::Contact &contact)
+    {
+      contact.load_unit     = LineLoadUnit::from_string(prm.get("Load unit"));
+      contact.surface_speed = prm.get_double("Surface speed");
+      if (contact.mode == Parameters::ContactMode::load)
+        for (double &v : contact.values)
+          v *= contact.load_unit.to_n_per_mm;
+      const double D =
+        optional_number(prm, "Contact", "Indenter diameter", true);
+      if (std::isnan(D))
+        return;
+      AssertThrow(at_default(prm, "Indenter radius", 76.2),
+                  ExcMessage("Contact: give either Indenter diameter or "
+                             "Indenter radius, not both"));
+      contact.indenter_radius = 0.5 * D;
+      contact.keys_set_without_mode |=
+        contact.mode == Parameters::ContactMode::none;
+    }
+
+    void
+    check_modulus(const Parameters::Material &material)
+    {
+      // The layer furthest outside the range of rubbers.
+      const MaterialTable layers(material);
+      double              G = layers[0].shear_modulus();
+      for (unsigned int j = 1; j < layers.n_layers(); ++j)
+        {
+          const double Gj = layers[j].shear_modulus();
+          if (std::abs(std::log(Gj)) > std::abs(std::log(G)))
+            G = Gj;
+        }
+      if (G >= 0.01 && G <= 100.)
+        return;
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        std::cerr << "rollnip: warning: Material/C1 + C2: the shear modulus "
+                     "2 (C1 + C2) = "
+                  << G
+                  << " MPa is outside 0.01 to 100 MPa, the range of rubbers "
+                     "(a unit mistake? C1 and C2 are in MPa)"
+                  << std::endl;
+    }
+
+    std::string
+    describe(const Parameters::AllParameters &p)
+    {
+      std::ostringstream s;
+      s << std::setprecision(6);
+      if (p.geometry.from_diameters)
+        s << "Geometry: roll diameter " << 2 * p.geometry.outer_radius
+          << " mm, cover thickness "
+          << p.geometry.outer_radius - p.geometry.inner_radius
+          << " mm: R0 = " << p.geometry.outer_radius
+          << " mm, R1 = " << p.geometry.inner_radius << " mm\n";
+      if (p.material.hardness_modulus > 0)
+        s << "Material: " << p.material.hardness_description
+          << ": E = " << p.material.hardness_modulus
+          << " MPa (an estimate from hardness), G = E/3 = "
+          << p.material.hardness_modulus / 3 << " MPa, C1 = " << p.material.C1
+          << " MPa, C2 = " << p.material.C2 << " MPa\n";
+      const auto &c = p.contact;
+      if (c.mode == Parameters::ContactMode::load && c.load_unit.name != "N/mm")
+        {
+          s << "Contact: line loads";
+          for (unsigned int i = 0; i < c.values.size(); ++i)
+            s << (i ? ", " : " ") << c.values[i] / c.load_unit.to_n_per_mm
+              << ' ' << c.load_unit.name << " = " << c.values[i] << " N/mm";
+          s << '\n';
+        }
+      return s.str();
+    }
+
+    std::string
+    summary_entries(const Parameters::AllParameters &p)
+    {
+      const double       G = surface_shear_modulus(p.material);
+      std::ostringstream s;
+      s << std::setprecision(8) << "shear_modulus_G_MPa = " << G << '\n'
+        << "youngs_modulus_E_MPa = " << 3 * G << '\n'
+        << "modulus_source = "
+        << (p.material.hardness_modulus > 0
+              ? "estimate from hardness " + p.material.hardness_description
+              : std::string("C1, C2"))
+        << '\n'
+        << "line_load_unit = " << p.contact.load_unit.name << '\n';
+      return s.str();
+    }
+  } // namespace EngineeringInputs
+} // namespace rollnip
