@@ -4,9 +4,11 @@
 #include <rollnip/contact/nip_control.h>
 #include <rollnip/contact/nip_report.h>
 #include <rollnip/contact/nip_study.h>
+#include <rollnip/geometry/angles.h>
 #include <rollnip/interrupt.h>
 #include <rollnip/material/material_table.h>
 #include <rollnip/output/atomic_file.h>
+#include <rollnip/output/sweep_pvd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -138,6 +140,37 @@ namespace rollnip
       write_contact_results(result, dir);
     }
 
+    /// What the time of the sweep's PVD is: the control of the sweep.
+    std::string
+    sweep_time_meaning(const Parameters::AllParameters &parameters)
+    {
+      switch (parameters.contact.mode)
+        {
+          case Parameters::ContactMode::load:
+            return "line load P [N/mm]";
+          case Parameters::ContactMode::indentation:
+            return "indentation u0 [mm]";
+          default:
+            return "half nip angle theta0 [deg]";
+        }
+    }
+
+    /// The time of nip @p r in the sweep's PVD (see sweep_time_meaning).
+    double
+    sweep_time(const Parameters::AllParameters &parameters,
+               const ContactResult             &r)
+    {
+      switch (parameters.contact.mode)
+        {
+          case Parameters::ContactMode::load:
+            return r.nip_load;
+          case Parameters::ContactMode::indentation:
+            return r.indentation;
+          default:
+            return r.theta0 * degrees_per_radian;
+        }
+    }
+
     /// Why a sweep stopped at nip @p n of @p total with @p converged
     /// nips done: the contact's @p message, or the interruption.
     std::string
@@ -257,10 +290,18 @@ namespace rollnip
               std::make_unique<InverseContact>(*linear, linear_parameters);
           }
 
+        // The sweep as one ParaView time series per theory.
+        const std::string meaning = sweep_time_meaning(parameters);
+        SweepPvd          pvd(top + "/solution_sweep.pvd", meaning);
+        SweepPvd   linear_pvd(top + "/solution_sweep_linear.pvd", meaning);
+        const bool series = sweep && parameters.output.write_vtu;
+
         for (unsigned int n = 0; n < values.size(); ++n)
           {
-            const std::string dir =
-              sweep ? top + "/nip-" + Utilities::int_to_string(n + 1, 2) : top;
+            const std::string nip = "nip-" + Utilities::int_to_string(n + 1, 2);
+            const std::string dir = sweep ? top + "/" + nip : top;
+            const std::string vtu =
+              "/solution-" + Utilities::int_to_string(n + 1, 4) + ".pvtu";
             NipRow row;
             row.n_dofs    = nonlinear.n_dofs();
             row.n_cells   = nonlinear.n_cells();
@@ -269,6 +310,8 @@ namespace rollnip
             if (parameters.output.write_vtu)
               nonlinear.write_vtu(n + 1, 1.);
             write_nip(nonlinear, row.nonlinear, dir);
+            if (series && row.nonlinear.converged)
+              pvd.add(sweep_time(parameters, row.nonlinear), nip + vtu);
             if (root)
               write_indenter_outline(parameters,
                                      row.nonlinear,
@@ -289,6 +332,12 @@ namespace rollnip
                 row.linear = linear_contact->solve(row.nonlinear.theta0);
                 linear->set_output_directory(dir + "/linear");
                 write_nip(*linear, row.linear, dir + "/linear", true);
+                if (series && row.linear.converged)
+                  {
+                    linear->write_vtu(n + 1, 1.);
+                    linear_pvd.add(sweep_time(parameters, row.nonlinear),
+                                   nip + "/linear" + vtu);
+                  }
               }
             rows.push_back(row);
           }

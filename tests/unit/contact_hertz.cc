@@ -1,7 +1,7 @@
-// Linear theory against Hertz (doc/intro.md section 7; physics.md section 8
-// item 5): a thick cover (R1 = 5 mm, R0 = 60.7 mm, h = 55.7 mm) pressed by
-// the Rbar = 76.2 mm cylinder at nips smaller than h. For a rigid
-// cylinder on an incompressible half-space in plane strain,
+// Linear theory against Hertz (doc/intro.md section 7): a thick cover (R1 = 5
+// mm, R0 = 60.7 mm, h = 55.7 mm) pressed by the Rbar = 76.2 mm cylinder at nips
+// smaller than h. For a rigid cylinder on an incompressible half-space in plane
+// strain,
 //   P = pi b^2 E* / (4 R),  E* = 4 G,  1/R = 1/R0 + 1/Rbar,
 //   peak pressure 2 P / (pi b),
 // with b the contact half-width. The finite thickness and the curvature of

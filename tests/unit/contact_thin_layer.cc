@@ -1,5 +1,5 @@
-// Linear theory against the thin bonded incompressible layer (physics.md
-// section 8 item 6; doc/intro.md section 7): a cover of thickness h on the
+// Linear theory against the thin bonded incompressible layer (doc/intro.md
+// section 7): a cover of thickness h on the
 // run-30 outer radius R0 = 60.7 mm, pressed by the Rbar = 76.2 mm cylinder
 // over the half-width a = 4 mm, with a/h = 8, 16, 32. The lubrication-type
 // asymptote of a frictionless indenter is
@@ -82,6 +82,6 @@ main(int argc, char **argv)
     }
   checker.check(excess.back() > 0.15 && excess.back() < 0.45,
                 "at a/h = 32 P lies " + testing::num(100 * excess.back()) +
-                  " % above the asymptote (physics.md: about 25 %)");
+                  " % above the asymptote (expected: about 25 %)");
   return checker.result();
 }

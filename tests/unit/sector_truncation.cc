@@ -1,4 +1,4 @@
-// Modelling only part of the roll (physics.md section 8; issue 4): the run-30
+// Modelling only part of the roll (doc/accuracy.md): the run-30
 // nip at theta0 = 8 deg on sectors of 30, 45 and 90 deg with a free far
 // edge, against the untruncated half roll (180 deg, symmetric far edge).
 // The circumferential cells have the same size (1.875 deg before

@@ -11,7 +11,8 @@ namespace rollnip
    * The derived fields of the VTU output: Cauchy stress (Cartesian, polar
    * about the roll axis in the current configuration, and zz), J, the
    * in-plane principal stretches and nominal strains, von Mises and the
-   * hydrostatic pressure -tr(sigma)/3. Evaluated from the solution, point by
+   * hydrostatic pressure -tr(sigma)/3, and the in-plane Cauchy stress and
+   * Green-Lagrange strain as tensors. Evaluated from the solution, point by
    * point, with evaluate_stress_state().
    */
   class StressPostprocessor : public DataPostprocessor<dim>
@@ -26,6 +27,10 @@ namespace rollnip
 
     std::vector<std::string>
     get_names() const override;
+
+    /// Scalars, then the stress and strain tensors.
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+    get_data_component_interpretation() const override;
 
     UpdateFlags
     get_needed_update_flags() const override;

@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# The ParaView files of a sweep: a load-controlled sweep of three nips
+# (5, 10, 20 N/mm, level 1, with the linear companion) writes
+# solution_sweep.pvd and solution_sweep_linear.pvd at the top of its output
+# directory. Each must be well-formed XML with one dataset per nip, time
+# values equal to the nip loads of nip_characteristic.csv (so increasing),
+# files that exist, and the time's meaning in a comment. The .vtu pieces
+# carry the Cauchy stress and the Green-Lagrange strain as 9-component
+# tensors (ParaView's tensor filters need them whole).
+#
+# Usage: bash sweep_pvd.sh ROLLNIP
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+
+[ $# -eq 1 ] || fail "usage: sweep_pvd.sh ROLLNIP"
+rollnip="$1"
+require_executable rollnip "$rollnip"
+start_test sweep_pvd
+command -v python3 >/dev/null || fail "python3 is needed to parse the XML"
+
+cat > sweep.prm <<PRM
+subsection Mesh
+  set Radial cells = 4
+  set Circumferential cells = 16
+  set Global refinements = 1
+end
+subsection Contact
+  set Mode = load
+  set Values = 5, 10, 20
+  set Indenter radius = 76.2
+  set Compare with linear theory = true
+end
+subsection Output
+  set Directory = out
+end
+PRM
+rc=0
+"$rollnip" sweep.prm > stdout.txt 2> stderr.txt || rc=$?
+[ "$rc" -eq 0 ] || { cat stderr.txt; fail "exit code $rc"; }
+pass "the sweep runs"
+
+python3 - <<'PY' || fail "the sweep PVD files are not what ParaView needs"
+import csv, os, re, sys, xml.etree.ElementTree as ET
+loads = [float(r["P_N_per_mm"]) for r in csv.DictReader(open("out/nip_characteristic.csv"))]
+ok = True
+for name in ["out/solution_sweep.pvd", "out/solution_sweep_linear.pvd"]:
+    text = open(name).read()
+    if "time = line load P [N/mm]" not in text:
+        print(f"FAIL: {name} does not say what its time is"); ok = False
+    sets = list(ET.parse(name).iter("DataSet"))
+    times = [float(d.get("timestep")) for d in sets]
+    if len(sets) != 3:
+        print(f"FAIL: {name} has {len(sets)} datasets, not 3"); ok = False
+    if any(abs(t - p) > 1e-6 * p for t, p in zip(times, loads)):
+        print(f"FAIL: {name} times {times} are not the loads {loads}"); ok = False
+    if times != sorted(times):
+        print(f"FAIL: {name} times {times} do not increase"); ok = False
+    for d in sets:
+        pvtu = os.path.join("out", d.get("file"))
+        if not os.path.isfile(pvtu):
+            print(f"FAIL: {pvtu} named in {name} does not exist"); ok = False
+            continue
+        vtu = pvtu.replace(".pvtu", ".0000.vtu")
+        head = open(vtu, "rb").read(200000).decode("latin-1")
+        for tensor in ["cauchy_stress", "green_lagrange_strain"]:
+            if not re.search(f'Name="{tensor}" NumberOfComponents="9"', head):
+                print(f"FAIL: {vtu} has no 9-component {tensor}"); ok = False
+    print(f"  {name}: times {times}")
+sys.exit(0 if ok else 1)
+PY
+pass "two sweep PVDs, one dataset per nip at the nip loads, tensors in the pieces"
