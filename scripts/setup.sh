@@ -4,6 +4,9 @@
 # installed, cmake configures only once, and the build is incremental.
 #
 # Usage: bash scripts/setup.sh        (from any directory)
+#        ROLLNIP_WITH_PARAVIEW=1 bash scripts/setup.sh
+#                                     also installs ParaView (pvpython, for
+#                                     scripts/render_nip.py; about 450 MB)
 set -euo pipefail
 
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -21,6 +24,9 @@ packages=(
   gnuplot-nox     # plots of the CSV tables
   python3
 )
+if [ "${ROLLNIP_WITH_PARAVIEW:-0}" = 1 ]; then
+  packages+=(paraview python3-paraview xvfb xauth)
+fi
 
 is_installed() {
   [ "$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null || true)" = \

@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# scripts/render_nip.py draws a nip with ParaView: run a small contact nip,
+# render it coloured by sigma_rr and by an unknown field, and check that the
+# PNG is written (a real image of the requested size) and that a missing
+# array is refused with a one-line message. Skipped (exit 77) where
+# pvpython is not installed (ROLLNIP_WITH_PARAVIEW=1 bash scripts/setup.sh
+# installs it).
+#
+# Usage: bash render_nip.sh ROLLNIP RENDER_SCRIPT
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+
+[ $# -eq 2 ] || fail "usage: render_nip.sh ROLLNIP RENDER_SCRIPT"
+rollnip="$1"
+script="$2"
+if ! command -v pvpython >/dev/null 2>&1; then
+  echo "skipped: pvpython (ParaView) is not installed; ROLLNIP_WITH_PARAVIEW=1 bash scripts/setup.sh installs it"
+  exit 77
+fi
+# ParaView needs a display; a machine without one renders under xvfb-run.
+pv=(pvpython)
+if [ -z "${DISPLAY:-}" ]; then
+  if ! command -v xvfb-run >/dev/null 2>&1; then
+    echo "skipped: no display and no xvfb-run for pvpython; ROLLNIP_WITH_PARAVIEW=1 bash scripts/setup.sh installs it"
+    exit 77
+  fi
+  pv=(xvfb-run -a pvpython)
+fi
+require_executable rollnip "$rollnip"
+start_test render_nip
+
+cat > nip.prm <<PRM
+subsection Mesh
+  set Global refinements = 1
+end
+subsection Contact
+  set Mode = nip angle
+  set Values = 8
+  set Indenter radius = 76.2
+end
+subsection Output
+  set Directory = out
+end
+PRM
+"$rollnip" nip.prm > run.txt 2>&1 || { cat run.txt; fail "the nip run failed"; }
+pass "a nip at theta0 = 8 deg ran"
+
+"${pv[@]}" "$script" out --field sigma_rr --output nip.png --size 800x600 > render.txt 2>&1 ||
+  { cat render.txt; fail "render_nip.py failed"; }
+[ -s nip.png ] || fail "nip.png was not written"
+size="$(python3 -c "import struct; d=open('nip.png','rb').read(24); print(*struct.unpack('>II', d[16:24]))")"
+[ "$size" = "800 600" ] || fail "nip.png is $size pixels, not 800 600"
+pass "nip.png written, 800 x 600 pixels"
+
+rc=0
+"${pv[@]}" "$script" out --field no_such_field --output x.png > bad.txt 2>&1 || rc=$?
+[ "$rc" -ne 0 ] || fail "an unknown field was accepted"
+grep -q "no point array 'no_such_field'" bad.txt || { cat bad.txt; fail "no clear message for an unknown field"; }
+pass "an unknown field is refused: $(grep "no point array" bad.txt | cut -c1-60)..."
