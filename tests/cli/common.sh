@@ -56,6 +56,19 @@ summary_value()
   echo "$value"
 }
 
+# csv_value FILE COLUMN ROW: the value in the first column named COLUMN of
+# a CSV table with a header line (ROW counts the data rows from 1).
+csv_value()
+{
+  local value
+  value="$(awk -F, -v name="$2" -v row="$3" '
+             NR == 1 { for (i = NF; i >= 1; --i) if ($i == name) c = i }
+             c && NR == row + 1 { print $c; found = 1 }
+             END { exit !found }' "$1")" ||
+    fail "no column '$2' with a row $3 in $1"
+  echo "$value"
+}
+
 # check_abs_below NAME VALUE LIMIT: |VALUE| < LIMIT.
 check_abs_below()
 {
