@@ -4,7 +4,7 @@ no linear companion, no VTU) at the extremes of its parameters and prints a
 Markdown table: what each scene gave, or the message it stopped with.
 doc/extremes.md holds the table of one run and what it means.
 
-Usage: python3 benchmarks/extremes.py        (about two minutes)
+Usage: python3 benchmarks/extremes.py        (about five minutes)
 Uses build/rollnip, or $ROLLNIP_BIN.
 """
 
@@ -39,6 +39,14 @@ CASES = [
     ("C2/C1 = 0 (C1 = 0.5 MPa)", {"Material": {"C1": "0.5", "C2": "0"}}),
     ("C2/C1 = 99", {"Material": {"C1": "0.005", "C2": "0.495"}}),
     ("C1 = 0 (C2 = 0.5 MPa)", {"Material": {"C1": "0", "C2": "0.5"}}),
+    ("thin hard top coat: 1 mm of G = 5 MPa on 12.5 mm of G = 1 MPa",
+     {"Material": {"C1": "0.4, 2.0", "C2": "0.1, 0.5", "Layer thicknesses": "12.5, 1"}}),
+    ("hard base: 3 mm of G = 5 MPa under 10.5 mm of G = 1 MPa",
+     {"Material": {"C1": "2.0, 0.4", "C2": "0.5, 0.1", "Layer thicknesses": "3, 10.5"}}),
+    ("very thin stiff top coat: 0.2 mm of G = 50 MPa on 13.3 mm of G = 1 MPa",
+     {"Material": {"C1": "0.4, 20", "C2": "0.1, 5", "Layer thicknesses": "13.3, 0.2"}}),
+    ("two equal layers (= default)",
+     {"Material": {"C1": "0.25, 0.25", "C2": "0.25, 0.25", "Layer thicknesses": "6.75, 6.75"}}),
     ("flat indenter (Rbar = inf)", {"Contact": {"Indenter radius": "inf"}}),
     ("small indenter Rbar = 5 mm, theta0 = 2 deg",
      {"Contact": {"Indenter radius": "5", "Values": "2"}}),
