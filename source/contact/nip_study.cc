@@ -362,7 +362,9 @@ namespace rollnip
       {
         if (root)
           std::cerr << "rollnip: error: contact: " << failure
-                    << "; the state of the last iteration is in '" << top << "'"
+                    << "; the files in '" << top
+                    << "' hold the last converged nip (contact.txt: the last "
+                       "iteration)"
                     << std::endl;
         return 1;
       }

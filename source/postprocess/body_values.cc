@@ -77,15 +77,26 @@ namespace rollnip
     /// The fields of one surface face, at its two vertices.
     struct FaceVertexValues
     {
+      explicit FaceVertexValues(const RollBody &body)
+          : fv(body.mapping(),
+               body.fe(),
+               QTrapezoid<dim - 1>(),
+               update_values | update_gradients | update_normal_vectors |
+                 update_quadrature_points)
+      {}
+
+      FEFaceValues<dim>           fv;
       std::vector<Tensor<1, dim>> u      = std::vector<Tensor<1, dim>>(2);
       std::vector<Tensor<2, dim>> grad_u = std::vector<Tensor<2, dim>>(2);
       std::vector<double>         q      = std::vector<double>(2);
       Tensor<1, dim>              n; ///< outward normal of the deformed face
 
       void
-      read(const FEFaceValues<dim>             &fv,
-           const TrilinosWrappers::MPI::Vector &solution)
+      read(const typename DoFHandler<dim>::active_cell_iterator &cell,
+           const unsigned int                                    f,
+           const TrilinosWrappers::MPI::Vector                  &solution)
       {
+        fv.reinit(cell, f);
         const FEValuesExtractors::Vector displacement(0);
         const FEValuesExtractors::Scalar pressure_unknown(dim);
         fv[displacement].get_function_values(solution, u);
@@ -133,12 +144,8 @@ namespace rollnip
       const unsigned int n_interfaces = body.materials().n_layers() - 1;
       if (n_interfaces == 0)
         return {};
-      FEFaceValues<dim>     fv(body.mapping(),
-                           body.fe(),
-                           QTrapezoid<dim - 1>(),
-                           update_values | update_gradients |
-                             update_normal_vectors | update_quadrature_points);
-      FaceVertexValues      values;
+      FaceVertexValues      values(body);
+      const auto           &fv = values.fv;
       std::vector<NodeSums> inner(n_interfaces), outer(n_interfaces);
       for (const auto &cell : body.dofs().active_cell_iterators())
         if (cell->is_locally_owned())
@@ -150,8 +157,7 @@ namespace rollnip
               const unsigned int other = cell->neighbor(f)->material_id();
               if (own == other)
                 continue;
-              fv.reinit(cell, f);
-              values.read(fv, body.solution());
+              values.read(cell, f, body.solution());
               NodeSums &sums = own < other ? inner[own] : outer[other];
               for (unsigned int v = 0; v < 2; ++v)
                 {
@@ -254,13 +260,9 @@ namespace rollnip
     const auto &bc = body.scene().boundary_conditions.condition;
     const bool  pressure_on_outer =
       bc[BoundaryIds::outer_arc] == Parameters::BoundaryCondition::pressure;
-    FEFaceValues<dim> fv(body.mapping(),
-                         body.fe(),
-                         QTrapezoid<dim - 1>(),
-                         update_values | update_gradients |
-                           update_normal_vectors | update_quadrature_points);
-    FaceVertexValues  values;
-    NodeSums          outer, bond;
+    FaceVertexValues values(body);
+    const auto      &fv = values.fv;
+    NodeSums         outer, bond;
     for (const auto &cell : body.dofs().active_cell_iterators())
       if (cell->is_locally_owned())
         for (const auto f : cell->face_indices())
@@ -270,8 +272,7 @@ namespace rollnip
             const types::boundary_id b = cell->face(f)->boundary_id();
             if (b != BoundaryIds::outer_arc && b != BoundaryIds::inner_arc)
               continue;
-            fv.reinit(cell, f);
-            values.read(fv, body.solution());
+            values.read(cell, f, body.solution());
             const MooneyRivlin &material =
               body.materials()[cell->material_id()];
             for (unsigned int v = 0; v < 2; ++v)

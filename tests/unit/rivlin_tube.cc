@@ -22,19 +22,11 @@ namespace
     return C * (G(R0 * R0 + c) - G(R1 * R1 + c));
   }
 
-  /// c for a given q, by bisection (q(c) is increasing).
+  /// c for a given q (q(c) is increasing).
   double
   c_of_pressure(const double q)
   {
-    double lo = 0, hi = 1;
-    while (pressure_of_c(hi) < q)
-      hi *= 2;
-    for (int i = 0; i < 200; ++i)
-      {
-        const double mid                   = 0.5 * (lo + hi);
-        (pressure_of_c(mid) < q ? lo : hi) = mid;
-      }
-    return 0.5 * (lo + hi);
+    return testing::increasing_root(pressure_of_c, q);
   }
 } // namespace
 

@@ -73,6 +73,23 @@ namespace rollnip
       return s.str();
     }
 
+    /// The c >= 0 with f(c) = target for an increasing f with f(0) <= target,
+    /// by bisection to round-off (the exact solutions given implicitly).
+    template <typename Function>
+    double
+    increasing_root(const Function &f, const double target)
+    {
+      double lo = 0, hi = 1;
+      while (f(hi) < target)
+        hi *= 2;
+      for (int i = 0; i < 200; ++i)
+        {
+          const double mid            = 0.5 * (lo + hi);
+          (f(mid) < target ? lo : hi) = mid;
+        }
+      return 0.5 * (lo + hi);
+    }
+
     /// Observed order of convergence from errors at mesh sizes h and h/2.
     inline double
     order(const double e_coarse, const double e_fine)
