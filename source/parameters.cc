@@ -118,88 +118,114 @@ namespace rollnip
       prm.leave_subsection();
     }
 
+    namespace
+    {
+      /// Mesh: where the coarse mesh comes from.
+      void
+      declare_mesh_source(ParameterHandler &prm)
+      {
+        declare_documented(prm,
+                           "Source",
+                           "builtin",
+                           Patterns::Selection("builtin|gmsh"),
+                           "builtin: a structured sector annulus; gmsh: read "
+                           "'Mesh file' (physical curve tags = boundary ids)");
+        declare_documented(
+          prm,
+          "Mesh file",
+          "",
+          Patterns::Anything(),
+          "A gmsh .msh file (format 2 or 4), used when Source = "
+          "gmsh; relative paths are taken from the working "
+          "directory");
+      }
+
+      /// Mesh: the coarse cells of the builtin mesh and their refinement.
+      void
+      declare_mesh_cells(ParameterHandler &prm)
+      {
+        declare_documented(prm,
+                           "Radial cells",
+                           "4",
+                           Patterns::Integer(1),
+                           "Coarse cells through the cover thickness");
+        declare_documented(prm,
+                           "Circumferential cells",
+                           "16",
+                           Patterns::Integer(1),
+                           "Coarse cells along the sector");
+        declare_documented(prm,
+                           "Circumferential grading",
+                           "8",
+                           Patterns::Double(1.),
+                           "Width of the widest coarse cell (at the far edge) "
+                           "over the narrowest (at theta = 0, the nip); 1 is "
+                           "uniform");
+        declare_documented(prm,
+                           "Radial grading",
+                           "1",
+                           Patterns::Double(0.),
+                           "Thickness of the outermost coarse cell over the "
+                           "innermost; below 1 refines towards the surface");
+        declare_documented(prm,
+                           "Global refinements",
+                           "1",
+                           Patterns::Integer(0, 12),
+                           "Uniform refinements of the coarse mesh");
+      }
+
+      /// Mesh: the meshes that adapt to the solution (grading, nip fitting).
+      void
+      declare_mesh_adaptation(ParameterHandler &prm)
+      {
+        declare_documented(
+          prm,
+          "Adaptive grading passes",
+          "0",
+          Patterns::Integer(0, 10),
+          "Before the run, solve the scene this many times and after each "
+          "solve re-cut the coarse circumferential cells (same number) so that "
+          "they equidistribute the Kelly error indicator: r-adaptivity without "
+          "hanging nodes (builtin mesh only; the first Contact/Values for a "
+          "contact scene). 0: the graded mesh as given");
+        declare_documented(
+          prm,
+          "Nip fitting",
+          "automatic",
+          Patterns::Selection("automatic|on|off"),
+          "on: the builtin mesh follows the nip, so that for every half nip "
+          "angle theta0 the contact edge is a surface vertex and P(theta0) is "
+          "smooth (only vertex positions change, doc/accuracy.md); off: a "
+          "fixed mesh graded by Circumferential grading, on which P(theta0) "
+          "steps wherever theta0 crosses a node; automatic: on for contact "
+          "scenes on the builtin mesh without adaptive grading");
+        declare_documented(
+          prm,
+          "Nip cells",
+          "8",
+          Patterns::Integer(1),
+          "Nip-fitted mesh: coarse circumferential cells in "
+          "the contact zone [0, theta0], out of Circumferential "
+          "cells (at least 2 must remain beyond it)");
+        declare_documented(prm,
+                           "Nip grading",
+                           "2",
+                           Patterns::Double(1.),
+                           "Nip-fitted mesh: width of the central coarse nip "
+                           "cell over the one at the contact edge (where the "
+                           "pressure falls like a square root); 2 gives "
+                           "monotone convergence under refinement "
+                           "(doc/accuracy.md)");
+      }
+    } // namespace
+
     void
     Mesh::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Mesh");
-      declare_documented(prm,
-                         "Source",
-                         "builtin",
-                         Patterns::Selection("builtin|gmsh"),
-                         "builtin: a structured sector annulus; gmsh: read "
-                         "'Mesh file' (physical curve tags = boundary ids)");
-      declare_documented(prm,
-                         "Mesh file",
-                         "",
-                         Patterns::Anything(),
-                         "A gmsh .msh file (format 2 or 4), used when Source = "
-                         "gmsh; relative paths are taken from the working "
-                         "directory");
-      declare_documented(prm,
-                         "Radial cells",
-                         "4",
-                         Patterns::Integer(1),
-                         "Coarse cells through the cover thickness");
-      declare_documented(prm,
-                         "Circumferential cells",
-                         "16",
-                         Patterns::Integer(1),
-                         "Coarse cells along the sector");
-      declare_documented(prm,
-                         "Circumferential grading",
-                         "8",
-                         Patterns::Double(1.),
-                         "Width of the widest coarse cell (at the far edge) "
-                         "over the narrowest (at theta = 0, the nip); 1 is "
-                         "uniform");
-      declare_documented(prm,
-                         "Radial grading",
-                         "1",
-                         Patterns::Double(0.),
-                         "Thickness of the outermost coarse cell over the "
-                         "innermost; below 1 refines towards the surface");
-      declare_documented(prm,
-                         "Global refinements",
-                         "1",
-                         Patterns::Integer(0, 12),
-                         "Uniform refinements of the coarse mesh");
-      declare_documented(
-        prm,
-        "Adaptive grading passes",
-        "0",
-        Patterns::Integer(0, 10),
-        "Before the run, solve the scene this many times and after each "
-        "solve re-cut the coarse circumferential cells (same number) so that "
-        "they equidistribute the Kelly error indicator: r-adaptivity without "
-        "hanging nodes (builtin mesh only; the first Contact/Values for a "
-        "contact scene). 0: the graded mesh as given");
-      declare_documented(
-        prm,
-        "Nip fitting",
-        "automatic",
-        Patterns::Selection("automatic|on|off"),
-        "on: the builtin mesh follows the nip, so that for every half nip "
-        "angle theta0 the contact edge is a surface vertex and P(theta0) is "
-        "smooth (only vertex positions change, doc/accuracy.md); off: a "
-        "fixed mesh graded by Circumferential grading, on which P(theta0) "
-        "steps wherever theta0 crosses a node; automatic: on for contact "
-        "scenes on the builtin mesh without adaptive grading");
-      declare_documented(prm,
-                         "Nip cells",
-                         "8",
-                         Patterns::Integer(1),
-                         "Nip-fitted mesh: coarse circumferential cells in "
-                         "the contact zone [0, theta0], out of Circumferential "
-                         "cells (at least 2 must remain beyond it)");
-      declare_documented(prm,
-                         "Nip grading",
-                         "2",
-                         Patterns::Double(1.),
-                         "Nip-fitted mesh: width of the central coarse nip "
-                         "cell over the one at the contact edge (where the "
-                         "pressure falls like a square root); 2 gives "
-                         "monotone convergence under refinement "
-                         "(doc/accuracy.md)");
+      declare_mesh_source(prm);
+      declare_mesh_cells(prm);
+      declare_mesh_adaptation(prm);
       prm.leave_subsection();
     }
 

@@ -149,6 +149,78 @@ namespace rollnip
     return std::min(next, upper);
   }
 
+  std::string
+  NipControl::quantity() const
+  {
+    return by_load ? "P" : "u0";
+  }
+
+  std::string
+  NipControl::unit() const
+  {
+    return by_load ? " N/mm" : " mm";
+  }
+
+  std::string
+  NipControl::largest_reached() const
+  {
+    std::ostringstream s;
+    s << std::setprecision(6);
+    if (converged.empty())
+      s << "no nip converged";
+    else
+      s << "the largest " << quantity() << " reached is " << converged.back().q
+        << unit() << " at theta0 = " << converged.back().theta * deg << " deg";
+    return s.str();
+  }
+
+  ContactResult
+  NipControl::refuse(ContactResult      r,
+                     const double       target,
+                     const std::string &why) const
+  {
+    std::ostringstream s;
+    s << std::setprecision(6) << "the target " << quantity() << " = " << target
+      << unit() << " is out of reach: " << why << "; " << largest_reached();
+    r.converged = false;
+    r.message   = s.str();
+    return r;
+  }
+
+  double
+  NipControl::converged_below(const double theta) const
+  {
+    double below = 0;
+    for (const auto &p : converged)
+      if (p.theta < theta)
+        below = p.theta;
+    return below;
+  }
+
+  void
+  NipControl::remember(const double theta, const double q)
+  {
+    converged.insert(std::upper_bound(converged.begin(),
+                                      converged.end(),
+                                      theta,
+                                      [](const double t, const Point &p) {
+                                        return t < p.theta;
+                                      }),
+                     Point{theta, q});
+  }
+
+  std::string
+  NipControl::beyond_mesh(const double theta_max) const
+  {
+    std::ostringstream s;
+    s << std::setprecision(6) << "theta0 would pass " << theta_max * deg
+      << " deg, the largest nip this mesh takes"
+      << (contact.max_nip_angle() > 0 ? " (half the sector angle on "
+                                        "the nip-fitted mesh)"
+                                      : "");
+    return s.str();
+  }
+
   ContactResult
   NipControl::solve(const double target)
   {
@@ -162,26 +234,6 @@ namespace rollnip
                              Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) ==
                                0);
     const double       theta_max = contact.max_nip_angle();
-    const std::string  name      = by_load ? "P" : "u0";
-    const std::string  unit      = by_load ? " N/mm" : " mm";
-    auto               largest   = [&]() {
-      std::ostringstream s;
-      s << std::setprecision(6);
-      if (converged.empty())
-        s << "no nip converged";
-      else
-        s << "the largest " << name << " reached is " << converged.back().q
-          << unit << " at theta0 = " << converged.back().theta * deg << " deg";
-      return s.str();
-    };
-    auto refuse = [&](ContactResult r, const std::string &why) {
-      std::ostringstream s;
-      s << std::setprecision(6) << "the target " << name << " = " << target
-        << unit << " is out of reach: " << why << "; " << largest();
-      r.converged = false;
-      r.message   = s.str();
-      return r;
-    };
 
     double theta = converged.empty() ? first_guess(target) : predict(target);
     theta        = std::min(theta, theta_max);
@@ -196,16 +248,14 @@ namespace rollnip
             return r;
           }
         ++n_solves;
-        r            = contact.solve(theta);
-        double below = 0; // the largest converged theta0 under theta
-        for (const auto &p : converged)
-          if (p.theta < theta)
-            below = p.theta;
+        r = contact.solve(theta);
         if (!r.converged)
           {
-            failed_at = std::min(failed_at, theta);
+            const double below = converged_below(theta);
+            failed_at          = std::min(failed_at, theta);
             if (theta - below < step_back_resolution * theta)
               return refuse(r,
+                            target,
                             "the contact iteration fails for every theta0 "
                             "just above the largest converged one (" +
                               r.message + ")");
@@ -216,32 +266,19 @@ namespace rollnip
             continue;
           }
         const double q = controlled(r);
-        converged.insert(std::upper_bound(converged.begin(),
-                                          converged.end(),
-                                          theta,
-                                          [](const double t, const Point &p) {
-                                            return t < p.theta;
-                                          }),
-                         Point{theta, q});
+        remember(theta, q);
         pcout << "Outer iteration " << it << ": theta0 = " << std::fixed
-              << std::setprecision(6) << theta * deg << " deg gives " << name
-              << " = " << q << unit << " (target " << target << ")"
-              << std::endl;
+              << std::setprecision(6) << theta * deg << " deg gives "
+              << quantity() << " = " << q << unit() << " (target " << target
+              << ")" << std::endl;
         if (std::abs(q / target - 1) < c.control_tolerance)
           return r;
         if (q < target && theta >= theta_max * (1 - 1e-12))
-          {
-            std::ostringstream s;
-            s << std::setprecision(6) << "theta0 would pass " << theta_max * deg
-              << " deg, the largest nip this mesh takes"
-              << (contact.max_nip_angle() > 0 ? " (half the sector angle on "
-                                                "the nip-fitted mesh)"
-                                              : "");
-            return refuse(r, s.str());
-          }
+          return refuse(r, target, beyond_mesh(theta_max));
         theta = next_theta(target, theta, std::min(failed_at, theta_max));
       }
     return refuse(r,
+                  target,
                   "the iteration on theta0 did not reach the control "
                   "tolerance " +
                     std::to_string(c.control_tolerance) + " in " +

@@ -249,18 +249,105 @@ namespace rollnip
             });
         }
     }
+
+    /// Solves the nips of Contact/Values in turn, writes and evaluates
+    /// each, and adds the converged ones to @p rows, with their linear
+    /// companions if @p linear is given; returns why the sweep stopped,
+    /// empty if it did not.
+    std::string
+    sweep_nips(RollProblem                     &nonlinear,
+               NipControl                      &control,
+               RollProblem                     *linear,
+               InverseContact                  *linear_contact,
+               const Parameters::AllParameters &parameters,
+               std::vector<NipRow>             &rows)
+    {
+      const auto        &values = parameters.contact.values;
+      const bool         sweep  = values.size() > 1;
+      const std::string &top    = parameters.output.directory;
+      // The sweep as one ParaView time series per theory.
+      const std::string meaning = sweep_time_meaning(parameters);
+      SweepPvd          pvd(top + "/solution_sweep.pvd", meaning);
+      SweepPvd          linear_pvd(top + "/solution_sweep_linear.pvd", meaning);
+      const bool        series = sweep && parameters.output.write_vtu;
+      for (unsigned int n = 0; n < values.size(); ++n)
+        {
+          const std::string nip = "nip-" + Utilities::int_to_string(n + 1, 2);
+          const std::string dir = sweep ? top + "/" + nip : top;
+          const std::string vtu =
+            "/solution-" + Utilities::int_to_string(n + 1, 4) + ".pvtu";
+          NipRow row;
+          row.n_dofs    = nonlinear.n_dofs();
+          row.n_cells   = nonlinear.n_cells();
+          row.nonlinear = control.solve(values[n]);
+          nonlinear.set_output_directory(dir);
+          if (parameters.output.write_vtu)
+            nonlinear.write_vtu(n + 1, 1.);
+          write_nip(nonlinear, row.nonlinear, dir);
+          if (series && row.nonlinear.converged)
+            pvd.add(sweep_time(parameters, row.nonlinear), nip + vtu);
+          if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+            write_indenter_outline(parameters,
+                                   row.nonlinear,
+                                   dir + "/indenter.csv");
+          if (!row.nonlinear.converged)
+            return why_stopped(row.nonlinear.message,
+                               n + 1,
+                               values.size(),
+                               rows.size());
+
+          evaluate_nip(nonlinear, parameters, n + 1, row);
+
+          if (linear)
+            {
+              row.linear = linear_contact->solve(row.nonlinear.theta0);
+              linear->set_output_directory(dir + "/linear");
+              write_nip(*linear, row.linear, dir + "/linear", true);
+              if (series && row.linear.converged)
+                {
+                  linear->write_vtu(n + 1, 1.);
+                  linear_pvd.add(sweep_time(parameters, row.nonlinear),
+                                 nip + "/linear" + vtu);
+                }
+            }
+          rows.push_back(row);
+        }
+      return "";
+    }
+
+    /// The nip characteristic and report of @p rows, which also go to
+    /// @p rows_out if given; returns the exit code (1, said, if the sweep
+    /// stopped for @p failure).
+    int
+    finish_sweep(const std::vector<NipRow>       &rows,
+                 const bool                       with_linear,
+                 const std::string               &failure,
+                 const Parameters::AllParameters &parameters,
+                 std::vector<NipRow>             *rows_out)
+    {
+      const std::string &top = parameters.output.directory;
+      write_nip_characteristic(rows, with_linear, top);
+      write_nip_report(rows, parameters, top);
+      if (rows_out)
+        *rows_out = rows;
+      if (!failure.empty())
+        {
+          if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+            std::cerr << "rollnip: error: contact: " << failure
+                      << "; the files in '" << top
+                      << "' hold the last converged nip (contact.txt: the "
+                         "last iteration)"
+                      << std::endl;
+          return 1;
+        }
+      return 0;
+    }
   } // namespace
 
   int
   run_nip_study(const Parameters::AllParameters &parameters,
                 std::vector<NipRow>             *rows_out)
   {
-    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-    ConditionalOStream pcout(std::cout, root);
-    const auto        &values = parameters.contact.values;
-    const bool         sweep  = values.size() > 1;
-    const std::string &top    = parameters.output.directory;
-
     std::vector<NipRow> rows;
     std::string         failure;
     bool                with_linear = false;
@@ -290,57 +377,12 @@ namespace rollnip
               std::make_unique<InverseContact>(*linear, linear_parameters);
           }
 
-        // The sweep as one ParaView time series per theory.
-        const std::string meaning = sweep_time_meaning(parameters);
-        SweepPvd          pvd(top + "/solution_sweep.pvd", meaning);
-        SweepPvd   linear_pvd(top + "/solution_sweep_linear.pvd", meaning);
-        const bool series = sweep && parameters.output.write_vtu;
-
-        for (unsigned int n = 0; n < values.size(); ++n)
-          {
-            const std::string nip = "nip-" + Utilities::int_to_string(n + 1, 2);
-            const std::string dir = sweep ? top + "/" + nip : top;
-            const std::string vtu =
-              "/solution-" + Utilities::int_to_string(n + 1, 4) + ".pvtu";
-            NipRow row;
-            row.n_dofs    = nonlinear.n_dofs();
-            row.n_cells   = nonlinear.n_cells();
-            row.nonlinear = control.solve(values[n]);
-            nonlinear.set_output_directory(dir);
-            if (parameters.output.write_vtu)
-              nonlinear.write_vtu(n + 1, 1.);
-            write_nip(nonlinear, row.nonlinear, dir);
-            if (series && row.nonlinear.converged)
-              pvd.add(sweep_time(parameters, row.nonlinear), nip + vtu);
-            if (root)
-              write_indenter_outline(parameters,
-                                     row.nonlinear,
-                                     dir + "/indenter.csv");
-            if (!row.nonlinear.converged)
-              {
-                failure = why_stopped(row.nonlinear.message,
-                                      n + 1,
-                                      values.size(),
-                                      rows.size());
-                break;
-              }
-
-            evaluate_nip(nonlinear, parameters, n + 1, row);
-
-            if (linear)
-              {
-                row.linear = linear_contact->solve(row.nonlinear.theta0);
-                linear->set_output_directory(dir + "/linear");
-                write_nip(*linear, row.linear, dir + "/linear", true);
-                if (series && row.linear.converged)
-                  {
-                    linear->write_vtu(n + 1, 1.);
-                    linear_pvd.add(sweep_time(parameters, row.nonlinear),
-                                   nip + "/linear" + vtu);
-                  }
-              }
-            rows.push_back(row);
-          }
+        failure = sweep_nips(nonlinear,
+                             control,
+                             linear.get(),
+                             linear_contact.get(),
+                             parameters,
+                             rows);
 
         with_linear = static_cast<bool>(linear);
       }
@@ -354,20 +396,6 @@ namespace rollnip
         throw;
       }
 
-    write_nip_characteristic(rows, with_linear, top);
-    write_nip_report(rows, parameters, top);
-    if (rows_out)
-      *rows_out = rows;
-    if (!failure.empty())
-      {
-        if (root)
-          std::cerr << "rollnip: error: contact: " << failure
-                    << "; the files in '" << top
-                    << "' hold the last converged nip (contact.txt: the last "
-                       "iteration)"
-                    << std::endl;
-        return 1;
-      }
-    return 0;
+    return finish_sweep(rows, with_linear, failure, parameters, rows_out);
   }
 } // namespace rollnip

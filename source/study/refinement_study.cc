@@ -208,6 +208,322 @@ namespace rollnip
             }
       return variants;
     }
+
+    /// @p p on the sector @p angle instead of that of @p given.
+    void
+    set_sector(const Parameters::AllParameters &given,
+               const double                     angle,
+               Parameters::AllParameters       &p)
+    {
+      // The same coarse cells near the nip on every sector: cells are
+      // added or dropped at the far end.
+      p.geometry.sector_angle = angle;
+      p.mesh.circumferential_steps =
+        extend_steps(coarse_circumferential_steps(given), angle);
+      // The nip-fitted mesh: the same nip cells, the cells beyond them in
+      // proportion to the sector.
+      const unsigned int n_far =
+        given.mesh.circumferential_cells - given.mesh.nip_cells;
+      p.mesh.circumferential_cells =
+        given.mesh.nip_cells +
+        std::max(2u,
+                 static_cast<unsigned int>(
+                   std::lround(n_far * angle / given.geometry.sector_angle)));
+      auto &far = p.boundary_conditions.condition[BoundaryIds::far_edge];
+      if (angle > numbers::PI - 1e-9)
+        far = Parameters::BoundaryCondition::symmetry;
+      else if (given.geometry.sector_angle > numbers::PI - 1e-9 &&
+               far == Parameters::BoundaryCondition::symmetry)
+        far = Parameters::BoundaryCondition::free; // truncated
+    }
+
+    /// The parameters of one run: @p variant of the study's scene at
+    /// refinement @p level, with its files below the study's directory.
+    Parameters::AllParameters
+    run_parameters(const Parameters::AllParameters &parameters,
+                   const Variant                   &variant,
+                   const unsigned int               level)
+    {
+      Parameters::AllParameters p     = parameters;
+      p.mesh.global_refinements       = level;
+      p.discretization.element        = variant.element;
+      p.load_stepping.n_initial_steps = variant.initial_steps;
+      if (variant.sector_angle != parameters.geometry.sector_angle)
+        set_sector(parameters, variant.sector_angle, p);
+      p.output.print_timing    = false;
+      p.contact.compare_linear = false;
+      p.output.directory       = parameters.output.directory + "/study/" +
+                           variant.tag + "-level-" + std::to_string(level);
+      if (p.contact.mode != Parameters::ContactMode::none)
+        p.contact.values.resize(1);
+      return p;
+    }
+
+    /// Runs the scene @p p into @p run, with its wall time (the slowest
+    /// process) and memory (all processes); returns the exit code, and in
+    /// @p thrown what a failed run threw.
+    int
+    timed_run(const Parameters::AllParameters &p, Run &run, std::string &thrown)
+    {
+      const auto start = std::chrono::steady_clock::now();
+      int        code  = 0;
+      try
+        {
+          code = run_scene(p, run);
+        }
+      catch (const std::exception &e)
+        {
+          // Another process may be waiting in a collective call.
+          rethrow_if_local(e);
+          code   = 1;
+          thrown = e.what();
+        }
+      run.wall = Utilities::MPI::max(std::chrono::duration<double>(
+                                       std::chrono::steady_clock::now() - start)
+                                       .count(),
+                                     MPI_COMM_WORLD);
+      Utilities::System::MemoryStats memory;
+      Utilities::System::get_memory_stats(memory);
+      run.memory = Utilities::MPI::sum(memory.VmHWM / 1024., MPI_COMM_WORLD);
+      return code;
+    }
+
+    /// Every variant at every level, in order, into @p runs; returns why
+    /// the study stopped early, empty if it did not.
+    std::string
+    run_all(const Parameters::AllParameters &parameters,
+            const std::vector<Variant>      &variants,
+            std::vector<Run>                &runs)
+    {
+      ConditionalOStream pcout(
+        std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
+      for (unsigned int vi = 0; vi < variants.size(); ++vi)
+        for (const unsigned int level : parameters.study.levels)
+          {
+            const Variant                  &variant = variants[vi];
+            const Parameters::AllParameters p =
+              run_parameters(parameters, variant, level);
+            pcout << "Study: " << variant.label << ", level " << level
+                  << std::endl;
+            Run         run;
+            std::string thrown;
+            const int   code = timed_run(p, run, thrown);
+            run.variant      = vi;
+            run.level        = level;
+            if (code != 0)
+              return variant.label + " at level " + std::to_string(level) +
+                     (thrown.empty() ? " did not converge"
+                                     : " failed: " + thrown) +
+                     " (see " + p.output.directory + ")";
+            runs.push_back(run);
+          }
+      return "";
+    }
+
+    /// The header line of study.csv; leaves @p csv at the precision of its
+    /// rows.
+    void
+    write_csv_header(const std::vector<Quantity> &quantities,
+                     std::ostringstream          &csv)
+    {
+      csv << "variant,element,sector_deg,initial_steps,level,cells,dofs";
+      for (const auto &q : quantities)
+        csv << ',' << q.key;
+      for (const auto &q : quantities)
+        csv << ",error_" << q.key;
+      csv << ",wall_s,process_peak_memory_MB\n" << std::setprecision(10);
+    }
+
+    /// The extrapolated limit of each quantity over the levels @p mine of
+    /// one variant of @p element.
+    std::vector<Extrapolation>
+    extrapolate_quantities(const std::vector<Run>   &mine,
+                           const unsigned int        n_quantities,
+                           const Parameters::Element element)
+    {
+      std::vector<Extrapolation> ex(n_quantities);
+      for (unsigned int q = 0; q < n_quantities; ++q)
+        {
+          std::vector<double> v;
+          for (const auto &r : mine)
+            v.push_back(r.values[q]);
+          // No element converges faster than its degree + 1 here.
+          ex[q] =
+            extrapolate(v, element == Parameters::Element::q2_p1 ? 3. : 2.);
+        }
+      return ex;
+    }
+
+    /// The table of the levels @p mine of @p variant with their errors
+    /// against @p exact; their rows of study.csv go to @p csv.
+    ConvergenceTable
+    variant_table(const Variant                    &variant,
+                  const std::vector<Run>           &mine,
+                  const std::vector<double>        &exact,
+                  const std::vector<Extrapolation> &ex,
+                  const std::vector<Quantity>      &quantities,
+                  std::ostringstream               &csv)
+    {
+      ConvergenceTable table;
+      for (const auto &r : mine)
+        {
+          table.add_value("level", r.level);
+          table.add_value("cells", static_cast<unsigned int>(r.cells));
+          table.add_value("DoFs", static_cast<unsigned int>(r.dofs));
+          csv << variant.tag << ',' << element_name(variant.element) << ','
+              << variant.sector_angle / (numbers::PI / 180.) << ','
+              << variant.initial_steps << ',' << r.level << ',' << r.cells
+              << ',' << r.dofs;
+          for (unsigned int q = 0; q < quantities.size(); ++q)
+            {
+              table.add_value(quantities[q].label, r.values[q]);
+              csv << ',' << r.values[q];
+            }
+          for (unsigned int q = 0; q < quantities.size(); ++q)
+            {
+              const double e = exact[q] != 0
+                                 ? std::abs(r.values[q] / exact[q] - 1)
+                                 : std::abs(r.values[q]);
+              table.add_value(quantities[q].error, e);
+              csv << ',' << e;
+            }
+          table.add_value("wall [s]", r.wall);
+          table.add_value("process peak [MB]", r.memory);
+          csv << ',' << r.wall << ',' << r.memory << '\n';
+        }
+      for (unsigned int q = 0; q < quantities.size(); ++q)
+        {
+          const std::string l = quantities[q].label;
+          table.set_precision(l, 6);
+          const std::string &e = quantities[q].error;
+          table.set_precision(e, 2);
+          table.set_scientific(e, true);
+          if (ex[q].valid)
+            table.evaluate_convergence_rates(
+              e, ConvergenceTable::reduction_rate_log2);
+        }
+      table.set_precision("wall [s]", 3);
+      table.set_precision("process peak [MB]", 1);
+      return table;
+    }
+
+    /// The extrapolated values of @p ex and their observed orders.
+    void
+    write_extrapolated(const std::vector<Extrapolation> &ex,
+                       const std::vector<Quantity>      &quantities,
+                       std::ostringstream               &text)
+    {
+      text << "Extrapolated values (observed order from the last three "
+              "levels):\n";
+      for (unsigned int q = 0; q < quantities.size(); ++q)
+        {
+          text << "  " << std::setw(16) << std::left << quantities[q].label
+               << std::right << std::setprecision(8) << ex[q].value;
+          if (ex[q].valid)
+            text << "   order " << std::setprecision(3) << ex[q].order
+                 << (ex[q].capped ? " (above element degree + 1: "
+                                    "extrapolated with that order)"
+                                  : "");
+          else
+            text << "   (not extrapolated: fewer than 3 levels or not "
+                    "monotone; errors are against the finest level)";
+          text << '\n';
+        }
+    }
+
+    /// The study of variant @p vi: its table and limits to @p text, its
+    /// rows to @p csv; returns its limits, empty if no level ran.
+    std::vector<double>
+    report_variant(const Variant               &variant,
+                   const unsigned int           vi,
+                   const std::vector<Run>      &runs,
+                   const std::vector<Quantity> &quantities,
+                   const bool                   contact,
+                   std::ostringstream          &text,
+                   std::ostringstream          &csv)
+    {
+      std::vector<Run> mine;
+      for (const auto &r : runs)
+        if (r.variant == vi)
+          mine.push_back(r);
+      if (mine.empty())
+        return {};
+      const std::vector<Extrapolation> ex =
+        extrapolate_quantities(mine, quantities.size(), variant.element);
+      std::vector<double> exact(quantities.size());
+      for (unsigned int q = 0; q < quantities.size(); ++q)
+        exact[q] = ex[q].value;
+      ConvergenceTable table =
+        variant_table(variant, mine, exact, ex, quantities, csv);
+
+      text << "Refinement study, " << variant.label
+           << " (e = relative error against the Richardson-extrapolated "
+              "value; rates are log2 of the error reduction per level; "
+              "process peak = the largest resident memory of the process "
+              "so far, so it measures the largest run up to that row)\n";
+      table.write_text(text, TableHandler::org_mode_table);
+      write_extrapolated(ex, quantities, text);
+      text << "Coarsest level within 1 % / 0.1 % of the extrapolated "
+           << quantities[0].label << ": " << cheapest(mine, exact, 0, 1e-2)
+           << " / " << cheapest(mine, exact, 0, 1e-3) << '\n';
+      if (contact)
+        text << "Coarsest level within 1 % / 0.1 % of the extrapolated "
+                "nip half-width b: "
+             << cheapest(mine, exact, 2, 1e-2) << " / "
+             << cheapest(mine, exact, 2, 1e-3) << '\n';
+      text << '\n';
+      return exact;
+    }
+
+    /// The most faithful variant with limits of the element of variant
+    /// @p vi: largest sector, then most initial load steps.
+    unsigned int
+    most_faithful(const std::vector<Variant>             &variants,
+                  const std::vector<std::vector<double>> &limits,
+                  const unsigned int                      vi)
+    {
+      unsigned int ref = vi;
+      for (unsigned int k = 0; k < variants.size(); ++k)
+        if (!limits[k].empty() && variants[k].element == variants[vi].element &&
+            (variants[k].sector_angle > variants[ref].sector_angle ||
+             (variants[k].sector_angle == variants[ref].sector_angle &&
+              variants[k].initial_steps > variants[ref].initial_steps)))
+          ref = k;
+      return ref;
+    }
+
+    /// The price of each simplification: every variant's limit against
+    /// that of the most faithful variant of its element.
+    void
+    compare_variants(const std::vector<Variant>             &variants,
+                     const std::vector<std::vector<double>> &limits,
+                     const std::vector<double>              &variant_wall,
+                     const std::vector<Quantity>            &quantities,
+                     std::ostringstream                     &text)
+    {
+      text << "Variants compared (limits as above; difference against "
+              "the most faithful variant of the same element: largest "
+              "sector, most initial load steps):\n";
+      for (unsigned int vi = 0; vi < variants.size(); ++vi)
+        {
+          if (limits[vi].empty())
+            continue;
+          const unsigned int ref = most_faithful(variants, limits, vi);
+          text << "  " << std::setw(40) << std::left << variants[vi].label
+               << std::right;
+          for (const unsigned int q : {0u, 1u})
+            {
+              const double d = limits[vi][q] / limits[ref][q] - 1;
+              text << "  " << quantities[q].label << " " << std::setprecision(8)
+                   << limits[vi][q] << " (" << std::showpos
+                   << std::setprecision(3) << 100 * d << std::noshowpos
+                   << " %)";
+            }
+          text << "  wall " << std::setprecision(3) << variant_wall[vi]
+               << " s (all levels)\n";
+        }
+      text << '\n';
+    }
   } // namespace
 
   int
@@ -221,238 +537,23 @@ namespace rollnip
     const std::vector<Variant> variants = make_variants(parameters);
     const std::string         &top      = parameters.output.directory;
 
-    std::vector<Run> runs;
-    std::string      failure;
-    for (unsigned int vi = 0; vi < variants.size(); ++vi)
-      {
-        const Variant &variant = variants[vi];
-        for (const unsigned int level : parameters.study.levels)
-          {
-            Parameters::AllParameters p     = parameters;
-            p.mesh.global_refinements       = level;
-            p.discretization.element        = variant.element;
-            p.load_stepping.n_initial_steps = variant.initial_steps;
-            if (variant.sector_angle != parameters.geometry.sector_angle)
-              {
-                // The same coarse cells near the nip on every sector:
-                // cells are added or dropped at the far end.
-                p.geometry.sector_angle = variant.sector_angle;
-                p.mesh.circumferential_steps =
-                  extend_steps(coarse_circumferential_steps(parameters),
-                               variant.sector_angle);
-                // The nip-fitted mesh: the same nip cells, the cells
-                // beyond them in proportion to the sector.
-                const unsigned int n_far =
-                  parameters.mesh.circumferential_cells -
-                  parameters.mesh.nip_cells;
-                p.mesh.circumferential_cells =
-                  parameters.mesh.nip_cells +
-                  std::max(2u,
-                           static_cast<unsigned int>(
-                             std::lround(n_far * variant.sector_angle /
-                                         parameters.geometry.sector_angle)));
-                auto &far =
-                  p.boundary_conditions.condition[BoundaryIds::far_edge];
-                if (variant.sector_angle > numbers::PI - 1e-9)
-                  far = Parameters::BoundaryCondition::symmetry;
-                else if (parameters.geometry.sector_angle >
-                           numbers::PI - 1e-9 &&
-                         far == Parameters::BoundaryCondition::symmetry)
-                  far = Parameters::BoundaryCondition::free; // truncated
-              }
-            p.output.print_timing    = false;
-            p.contact.compare_linear = false;
-            p.output.directory =
-              top + "/study/" + variant.tag + "-level-" + std::to_string(level);
-            if (contact)
-              p.contact.values.resize(1);
-            pcout << "Study: " << variant.label << ", level " << level
-                  << std::endl;
-            Run         run;
-            const auto  start = std::chrono::steady_clock::now();
-            int         code  = 0;
-            std::string thrown;
-            try
-              {
-                code = run_scene(p, run);
-              }
-            catch (const std::exception &e)
-              {
-                // Another process may be waiting in a collective call.
-                rethrow_if_local(e);
-                code   = 1;
-                thrown = e.what();
-              }
-            run.wall =
-              Utilities::MPI::max(std::chrono::duration<double>(
-                                    std::chrono::steady_clock::now() - start)
-                                    .count(),
-                                  MPI_COMM_WORLD);
-            Utilities::System::MemoryStats memory;
-            Utilities::System::get_memory_stats(memory);
-            run.memory =
-              Utilities::MPI::sum(memory.VmHWM / 1024., MPI_COMM_WORLD);
-            run.variant = vi;
-            run.level   = level;
-            if (code != 0)
-              {
-                failure = variant.label + " at level " + std::to_string(level) +
-                          (thrown.empty() ? " did not converge"
-                                          : " failed: " + thrown) +
-                          " (see " + p.output.directory + ")";
-                break;
-              }
-            runs.push_back(run);
-          }
-        if (!failure.empty())
-          break;
-      }
+    std::vector<Run>  runs;
+    const std::string failure = run_all(parameters, variants, runs);
 
     // One table per element; errors against the extrapolated value of
     // that element's sequence.
     std::ostringstream text, csv;
-    csv << "variant,element,sector_deg,initial_steps,level,cells,dofs";
-    for (const auto &q : quantities)
-      csv << ',' << q.key;
-    for (const auto &q : quantities)
-      csv << ",error_" << q.key;
-    csv << ",wall_s,process_peak_memory_MB\n" << std::setprecision(10);
+    write_csv_header(quantities, csv);
     std::vector<std::vector<double>> limits(variants.size());
     std::vector<double>              variant_wall(variants.size(), 0.);
+    for (const auto &r : runs)
+      variant_wall[r.variant] += r.wall;
     for (unsigned int vi = 0; vi < variants.size(); ++vi)
-      {
-        const Variant   &variant = variants[vi];
-        std::vector<Run> mine;
-        for (const auto &r : runs)
-          if (r.variant == vi)
-            {
-              mine.push_back(r);
-              variant_wall[vi] += r.wall;
-            }
-        if (mine.empty())
-          continue;
-        std::vector<double>        exact(quantities.size());
-        std::vector<Extrapolation> ex(quantities.size());
-        for (unsigned int q = 0; q < quantities.size(); ++q)
-          {
-            std::vector<double> v;
-            for (const auto &r : mine)
-              v.push_back(r.values[q]);
-            // No element converges faster than its degree + 1 here.
-            ex[q] = extrapolate(
-              v, variant.element == Parameters::Element::q2_p1 ? 3. : 2.);
-            exact[q] = ex[q].value;
-          }
-        limits[vi] = exact;
-        ConvergenceTable table;
-        for (const auto &r : mine)
-          {
-            table.add_value("level", r.level);
-            table.add_value("cells", static_cast<unsigned int>(r.cells));
-            table.add_value("DoFs", static_cast<unsigned int>(r.dofs));
-            csv << variant.tag << ',' << element_name(variant.element) << ','
-                << variant.sector_angle / (numbers::PI / 180.) << ','
-                << variant.initial_steps << ',' << r.level << ',' << r.cells
-                << ',' << r.dofs;
-            for (unsigned int q = 0; q < quantities.size(); ++q)
-              {
-                table.add_value(quantities[q].label, r.values[q]);
-                csv << ',' << r.values[q];
-              }
-            for (unsigned int q = 0; q < quantities.size(); ++q)
-              {
-                const double e = exact[q] != 0
-                                   ? std::abs(r.values[q] / exact[q] - 1)
-                                   : std::abs(r.values[q]);
-                table.add_value(quantities[q].error, e);
-                csv << ',' << e;
-              }
-            table.add_value("wall [s]", r.wall);
-            table.add_value("process peak [MB]", r.memory);
-            csv << ',' << r.wall << ',' << r.memory << '\n';
-          }
-        for (unsigned int q = 0; q < quantities.size(); ++q)
-          {
-            const std::string l = quantities[q].label;
-            table.set_precision(l, 6);
-            const std::string &e = quantities[q].error;
-            table.set_precision(e, 2);
-            table.set_scientific(e, true);
-            if (ex[q].valid)
-              table.evaluate_convergence_rates(
-                e, ConvergenceTable::reduction_rate_log2);
-          }
-        table.set_precision("wall [s]", 3);
-        table.set_precision("process peak [MB]", 1);
-
-        text << "Refinement study, " << variant.label
-             << " (e = relative error against the Richardson-extrapolated "
-                "value; rates are log2 of the error reduction per level; "
-                "process peak = the largest resident memory of the process "
-                "so far, so it measures the largest run up to that row)\n";
-        table.write_text(text, TableHandler::org_mode_table);
-        text << "Extrapolated values (observed order from the last three "
-                "levels):\n";
-        for (unsigned int q = 0; q < quantities.size(); ++q)
-          {
-            text << "  " << std::setw(16) << std::left << quantities[q].label
-                 << std::right << std::setprecision(8) << ex[q].value;
-            if (ex[q].valid)
-              text << "   order " << std::setprecision(3) << ex[q].order
-                   << (ex[q].capped ? " (above element degree + 1: "
-                                      "extrapolated with that order)"
-                                    : "");
-            else
-              text << "   (not extrapolated: fewer than 3 levels or not "
-                      "monotone; errors are against the finest level)";
-            text << '\n';
-          }
-        text << "Coarsest level within 1 % / 0.1 % of the extrapolated "
-             << quantities[0].label << ": " << cheapest(mine, exact, 0, 1e-2)
-             << " / " << cheapest(mine, exact, 0, 1e-3) << '\n';
-        if (contact)
-          text << "Coarsest level within 1 % / 0.1 % of the extrapolated "
-                  "nip half-width b: "
-               << cheapest(mine, exact, 2, 1e-2) << " / "
-               << cheapest(mine, exact, 2, 1e-3) << '\n';
-        text << '\n';
-      }
-    // The price of each simplification: every variant's limit against
-    // that of the most faithful variant of its element (largest sector,
-    // most initial steps).
+      limits[vi] =
+        report_variant(variants[vi], vi, runs, quantities, contact, text, csv);
     if (!parameters.study.sector_angles.empty() ||
         !parameters.study.initial_steps.empty())
-      {
-        text << "Variants compared (limits as above; difference against "
-                "the most faithful variant of the same element: largest "
-                "sector, most initial load steps):\n";
-        for (unsigned int vi = 0; vi < variants.size(); ++vi)
-          {
-            if (limits[vi].empty())
-              continue;
-            unsigned int ref = vi;
-            for (unsigned int k = 0; k < variants.size(); ++k)
-              if (!limits[k].empty() &&
-                  variants[k].element == variants[vi].element &&
-                  (variants[k].sector_angle > variants[ref].sector_angle ||
-                   (variants[k].sector_angle == variants[ref].sector_angle &&
-                    variants[k].initial_steps > variants[ref].initial_steps)))
-                ref = k;
-            text << "  " << std::setw(40) << std::left << variants[vi].label
-                 << std::right;
-            for (const unsigned int q : {0u, 1u})
-              {
-                const double d = limits[vi][q] / limits[ref][q] - 1;
-                text << "  " << quantities[q].label << " "
-                     << std::setprecision(8) << limits[vi][q] << " ("
-                     << std::showpos << std::setprecision(3) << 100 * d
-                     << std::noshowpos << " %)";
-              }
-            text << "  wall " << std::setprecision(3) << variant_wall[vi]
-                 << " s (all levels)\n";
-          }
-        text << '\n';
-      }
+      compare_variants(variants, limits, variant_wall, quantities, text);
     if (!failure.empty())
       text << "The study stopped: " << failure << "\n";
     pcout << '\n' << text.str();

@@ -58,6 +58,101 @@ namespace
   {
     return std::abs(a / b - 1);
   }
+
+  /// The same scene in m and Pa, and with stiff and soft covers, against
+  /// the default scene's @p P and @p u0.
+  void
+  check_units_and_modulus(testing::Checker &checker,
+                          const double      P,
+                          const double      u0)
+  {
+    const Nip si = solve(
+      "subsection Geometry\n set Inner radius = 0.0472\n set Outer radius = "
+      "0.0607\nend\n"
+      "subsection Material\n set C1 = 250000\n set C2 = 250000\nend\n"
+      "subsection Contact\n set Indenter radius = 0.0762\nend\n");
+    checker.check(si.r.converged && rel(si.r.nip_load, 1000 * P) < 1e-6 &&
+                    rel(si.r.indentation, 1e-3 * u0) < 1e-6,
+                  "m and Pa: P = " + testing::num(si.r.nip_load) +
+                    " N/m, u0 = " + testing::num(si.r.indentation) +
+                    " m (1000 P, u0/1000 to 1e-6)");
+
+    const Nip stiff =
+      solve("subsection Material\n set C1 = 250\n set C2 = 250\nend\n");
+    const Nip soft =
+      solve("subsection Material\n set C1 = 0.0025\n set C2 = 0.0025\nend\n");
+    checker.check(stiff.r.converged && soft.r.converged &&
+                    rel(stiff.r.nip_load, 1000 * P) < 1e-6 &&
+                    rel(soft.r.nip_load, 0.01 * P) < 1e-6 &&
+                    rel(stiff.r.indentation, u0) < 1e-6 &&
+                    rel(soft.r.indentation, u0) < 1e-6,
+                  "P / G and u0 independent of the modulus: " +
+                    testing::num(stiff.r.nip_load) + " and " +
+                    testing::num(soft.r.nip_load) + " N/mm");
+  }
+
+  /// 1 and 100 initial load steps, and all of G in C1 or in C2, against
+  /// the default scene's @p P and @p u0.
+  void
+  check_path_and_split(testing::Checker &checker,
+                       const double      P,
+                       const double      u0)
+  {
+    for (const std::string steps : {"1", "100"})
+      {
+        const Nip s =
+          solve("subsection Load stepping\n set Initial steps = " + steps +
+                "\nend\n");
+        checker.check(s.r.converged && rel(s.r.nip_load, P) < 1e-5,
+                      steps + " initial load step(s): P = " +
+                        testing::num(s.r.nip_load) + " N/mm (same to 1e-5)");
+      }
+
+    for (const std::string split :
+         {"set C1 = 0.5\n set C2 = 0", "set C1 = 0\n set C2 = 0.5"})
+      {
+        const Nip s = solve("subsection Material\n " + split + "\nend\n");
+        checker.check(s.r.converged && rel(s.r.nip_load, P) < 0.01 &&
+                        rel(s.r.indentation, u0) < 0.01,
+                      "C1/C2 split (" + split.substr(4, split.find('\n') - 4) +
+                        "...): P = " + testing::num(s.r.nip_load) +
+                        " N/mm within 1 % of " + testing::num(P));
+      }
+  }
+
+  /// The thick cover, the almost solid roll and the thin cover: converged,
+  /// conforming, with the load from the traction within 1 % of P.
+  void
+  check_extreme_covers(testing::Checker &checker)
+  {
+    struct Scene
+    {
+      std::string name, extra;
+      double      theta0;
+    };
+    for (const Scene &sc :
+         {Scene{"thick cover h/R0 = 0.8",
+                "subsection Geometry\n set Inner radius = 12.14\nend\n"
+                "subsection Mesh\n set Radial cells = 12\n set Radial grading "
+                "= 0.1\nend\n",
+                8.},
+          Scene{"almost solid roll R1 = 1 mm",
+                "subsection Geometry\n set Inner radius = 1\nend\n"
+                "subsection Mesh\n set Radial cells = 16\n set Radial grading "
+                "= 0.1\nend\n",
+                8.},
+          Scene{"thin cover h/R0 = 0.02",
+                "subsection Geometry\n set Inner radius = 59.486\nend\n",
+                4.}})
+      {
+        const Nip s = solve(sc.extra, sc.theta0);
+        checker.check(s.r.converged && s.r.conformity < 1e-6 &&
+                        rel(s.traction_load, s.r.nip_load) < 0.01,
+                      sc.name + ": P = " + testing::num(s.r.nip_load) +
+                        " N/mm, from the traction " +
+                        testing::num(s.traction_load) + " N/mm (within 1 %)");
+      }
+  }
 } // namespace
 
 int
@@ -69,77 +164,9 @@ main(int argc, char **argv)
   checker.check(base.r.converged, "default scene converged");
   const double P = base.r.nip_load, u0 = base.r.indentation;
 
-  const Nip si = solve(
-    "subsection Geometry\n set Inner radius = 0.0472\n set Outer radius = "
-    "0.0607\nend\n"
-    "subsection Material\n set C1 = 250000\n set C2 = 250000\nend\n"
-    "subsection Contact\n set Indenter radius = 0.0762\nend\n");
-  checker.check(si.r.converged && rel(si.r.nip_load, 1000 * P) < 1e-6 &&
-                  rel(si.r.indentation, 1e-3 * u0) < 1e-6,
-                "m and Pa: P = " + testing::num(si.r.nip_load) +
-                  " N/m, u0 = " + testing::num(si.r.indentation) +
-                  " m (1000 P, u0/1000 to 1e-6)");
-
-  const Nip stiff =
-    solve("subsection Material\n set C1 = 250\n set C2 = 250\nend\n");
-  const Nip soft =
-    solve("subsection Material\n set C1 = 0.0025\n set C2 = 0.0025\nend\n");
-  checker.check(stiff.r.converged && soft.r.converged &&
-                  rel(stiff.r.nip_load, 1000 * P) < 1e-6 &&
-                  rel(soft.r.nip_load, 0.01 * P) < 1e-6 &&
-                  rel(stiff.r.indentation, u0) < 1e-6 &&
-                  rel(soft.r.indentation, u0) < 1e-6,
-                "P / G and u0 independent of the modulus: " +
-                  testing::num(stiff.r.nip_load) + " and " +
-                  testing::num(soft.r.nip_load) + " N/mm");
-
-  for (const std::string steps : {"1", "100"})
-    {
-      const Nip s = solve(
-        "subsection Load stepping\n set Initial steps = " + steps + "\nend\n");
-      checker.check(s.r.converged && rel(s.r.nip_load, P) < 1e-5,
-                    steps + " initial load step(s): P = " +
-                      testing::num(s.r.nip_load) + " N/mm (same to 1e-5)");
-    }
-
-  for (const std::string split :
-       {"set C1 = 0.5\n set C2 = 0", "set C1 = 0\n set C2 = 0.5"})
-    {
-      const Nip s = solve("subsection Material\n " + split + "\nend\n");
-      checker.check(s.r.converged && rel(s.r.nip_load, P) < 0.01 &&
-                      rel(s.r.indentation, u0) < 0.01,
-                    "C1/C2 split (" + split.substr(4, split.find('\n') - 4) +
-                      "...): P = " + testing::num(s.r.nip_load) +
-                      " N/mm within 1 % of " + testing::num(P));
-    }
-
-  struct Scene
-  {
-    std::string name, extra;
-    double      theta0;
-  };
-  for (const Scene &sc :
-       {Scene{"thick cover h/R0 = 0.8",
-              "subsection Geometry\n set Inner radius = 12.14\nend\n"
-              "subsection Mesh\n set Radial cells = 12\n set Radial grading = "
-              "0.1\nend\n",
-              8.},
-        Scene{"almost solid roll R1 = 1 mm",
-              "subsection Geometry\n set Inner radius = 1\nend\n"
-              "subsection Mesh\n set Radial cells = 16\n set Radial grading "
-              "= 0.1\nend\n",
-              8.},
-        Scene{"thin cover h/R0 = 0.02",
-              "subsection Geometry\n set Inner radius = 59.486\nend\n",
-              4.}})
-    {
-      const Nip s = solve(sc.extra, sc.theta0);
-      checker.check(s.r.converged && s.r.conformity < 1e-6 &&
-                      rel(s.traction_load, s.r.nip_load) < 0.01,
-                    sc.name + ": P = " + testing::num(s.r.nip_load) +
-                      " N/mm, from the traction " +
-                      testing::num(s.traction_load) + " N/mm (within 1 %)");
-    }
+  check_units_and_modulus(checker, P, u0);
+  check_path_and_split(checker, P, u0);
+  check_extreme_covers(checker);
 
   const Nip too_large = solve("", 20.);
   checker.check(!too_large.r.converged && !too_large.r.message.empty(),

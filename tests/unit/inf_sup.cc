@@ -76,6 +76,126 @@ namespace
     return std::abs(alternating) / total;
   }
 
+  /// The displacement and pressure DoFs of a problem, each numbered in
+  /// its own block.
+  struct Blocks
+  {
+    IndexSet                  is_pressure;
+    std::vector<int>          block_index; ///< of each DoF in its block
+    std::vector<unsigned int> u_dofs, p_dofs;
+  };
+
+  /// The blocks of the DoFs of @p dof_handler.
+  Blocks
+  split_blocks(const DoFHandler<dim> &dof_handler)
+  {
+    Blocks b;
+    b.is_pressure =
+      DoFTools::extract_dofs(dof_handler, ComponentMask({false, false, true}));
+    const unsigned int n = dof_handler.n_dofs();
+    b.block_index.resize(n);
+    for (unsigned int i = 0; i < n; ++i)
+      if (b.is_pressure.is_element(i))
+        {
+          b.block_index[i] = b.p_dofs.size();
+          b.p_dofs.push_back(i);
+        }
+      else
+        {
+          b.block_index[i] = b.u_dofs.size();
+          b.u_dofs.push_back(i);
+        }
+    return b;
+  }
+
+  /// S = B A^-1 B^T (symmetrised) from the assembled tangent @p K.
+  Eigen::MatrixXd
+  schur_complement(const TrilinosWrappers::SparseMatrix &K,
+                   const Blocks                         &blocks)
+  {
+    // A and B from the assembled tangent (constrained rows of A carry only
+    // their diagonal, so they decouple).
+    using Triplet = Eigen::Triplet<double>;
+    std::vector<Triplet> a_entries, b_entries;
+    for (unsigned int row = 0; row < blocks.block_index.size(); ++row)
+      for (auto entry = K.begin(row); entry != K.end(row); ++entry)
+        {
+          const unsigned int col = entry->column();
+          if (entry->value() == 0)
+            continue;
+          const bool p_row = blocks.is_pressure.is_element(row);
+          const bool p_col = blocks.is_pressure.is_element(col);
+          if (!p_row && !p_col)
+            a_entries.emplace_back(blocks.block_index[row],
+                                   blocks.block_index[col],
+                                   entry->value());
+          else if (p_row && !p_col)
+            b_entries.emplace_back(blocks.block_index[row],
+                                   blocks.block_index[col],
+                                   entry->value());
+        }
+    const auto                  n_u = blocks.u_dofs.size();
+    const auto                  n_p = blocks.p_dofs.size();
+    Eigen::SparseMatrix<double> A(n_u, n_u);
+    Eigen::SparseMatrix<double> B(n_p, n_u);
+    A.setFromTriplets(a_entries.begin(), a_entries.end());
+    B.setFromTriplets(b_entries.begin(), b_entries.end());
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(A);
+    const Eigen::MatrixXd X = lu.solve(Eigen::MatrixXd(B.transpose()));
+    Eigen::MatrixXd       S = B * X;
+    S                       = 0.5 * (S + S.transpose());
+    return S;
+  }
+
+  /// The pressure mass matrix, cell by cell.
+  Eigen::MatrixXd
+  pressure_mass_matrix(const DoFHandler<dim> &dof_handler, const Blocks &blocks)
+  {
+    const auto                          &fe = dof_handler.get_fe();
+    MappingQ<dim>                        mapping(2);
+    FEValues<dim>                        fe_values(mapping,
+                            fe,
+                            QGauss<dim>(fe.degree + 1),
+                            update_values | update_JxW_values);
+    const FEValuesExtractors::Scalar     pressure(dim);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    const auto                           n_p = blocks.p_dofs.size();
+    Eigen::MatrixXd                      M   = Eigen::MatrixXd::Zero(n_p, n_p);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          for (unsigned int j = 0; j < dofs.size(); ++j)
+            if (fe.system_to_component_index(i).first == dim &&
+                fe.system_to_component_index(j).first == dim)
+              for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+                M(blocks.block_index[dofs[i]], blocks.block_index[dofs[j]]) +=
+                  fe_values[pressure].value(i, q) *
+                  fe_values[pressure].value(j, q) * fe_values.JxW(q);
+      }
+    return M;
+  }
+
+  /// The pressure mode @p mode (one value per cell, Q1-P0) as cell values.
+  std::vector<double>
+  cell_values(const DoFHandler<dim> &dof_handler,
+              const Blocks          &blocks,
+              const Eigen::VectorXd &mode)
+  {
+    const auto                          &fe = dof_handler.get_fe();
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    std::vector<double> v(dof_handler.get_triangulation().n_active_cells());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          if (fe.system_to_component_index(i).first == dim)
+            v[cell->active_cell_index()] = mode(blocks.block_index[dofs[i]]);
+      }
+    return v;
+  }
+
   /// G lambda_min(S, M_p) for the scene at @p refinements.
   double
   inf_sup_squared(const std::string &element,
@@ -94,79 +214,10 @@ namespace
     problem.setup();
     problem.assemble(0., true);
 
-    const auto &dof_handler = problem.dofs();
-    const auto  is_pressure =
-      DoFTools::extract_dofs(dof_handler, ComponentMask({false, false, true}));
-    const unsigned int        n = dof_handler.n_dofs();
-    std::vector<int>          block_index(n);
-    std::vector<unsigned int> u_dofs, p_dofs;
-    for (unsigned int i = 0; i < n; ++i)
-      if (is_pressure.is_element(i))
-        {
-          block_index[i] = p_dofs.size();
-          p_dofs.push_back(i);
-        }
-      else
-        {
-          block_index[i] = u_dofs.size();
-          u_dofs.push_back(i);
-        }
-
-    // A and B from the assembled tangent (constrained rows of A carry only
-    // their diagonal, so they decouple).
-    using Triplet = Eigen::Triplet<double>;
-    std::vector<Triplet> a_entries, b_entries;
-    const auto          &K = problem.tangent();
-    for (unsigned int row = 0; row < n; ++row)
-      for (auto entry = K.begin(row); entry != K.end(row); ++entry)
-        {
-          const unsigned int col = entry->column();
-          if (entry->value() == 0)
-            continue;
-          const bool p_row = is_pressure.is_element(row);
-          const bool p_col = is_pressure.is_element(col);
-          if (!p_row && !p_col)
-            a_entries.emplace_back(block_index[row],
-                                   block_index[col],
-                                   entry->value());
-          else if (p_row && !p_col)
-            b_entries.emplace_back(block_index[row],
-                                   block_index[col],
-                                   entry->value());
-        }
-    Eigen::SparseMatrix<double> A(u_dofs.size(), u_dofs.size());
-    Eigen::SparseMatrix<double> B(p_dofs.size(), u_dofs.size());
-    A.setFromTriplets(a_entries.begin(), a_entries.end());
-    B.setFromTriplets(b_entries.begin(), b_entries.end());
-    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(A);
-    const Eigen::MatrixXd X = lu.solve(Eigen::MatrixXd(B.transpose()));
-    Eigen::MatrixXd       S = B * X;
-    S                       = 0.5 * (S + S.transpose());
-
-    // The pressure mass matrix, cell by cell.
-    const auto                          &fe = dof_handler.get_fe();
-    MappingQ<dim>                        mapping(2);
-    FEValues<dim>                        fe_values(mapping,
-                            fe,
-                            QGauss<dim>(fe.degree + 1),
-                            update_values | update_JxW_values);
-    const FEValuesExtractors::Scalar     pressure(dim);
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    Eigen::MatrixXd M = Eigen::MatrixXd::Zero(p_dofs.size(), p_dofs.size());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        fe_values.reinit(cell);
-        cell->get_dof_indices(dofs);
-        for (unsigned int i = 0; i < dofs.size(); ++i)
-          for (unsigned int j = 0; j < dofs.size(); ++j)
-            if (fe.system_to_component_index(i).first == dim &&
-                fe.system_to_component_index(j).first == dim)
-              for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
-                M(block_index[dofs[i]], block_index[dofs[j]]) +=
-                  fe_values[pressure].value(i, q) *
-                  fe_values[pressure].value(j, q) * fe_values.JxW(q);
-      }
-
+    const auto           &dof_handler = problem.dofs();
+    const Blocks          blocks      = split_blocks(dof_handler);
+    const Eigen::MatrixXd S = schur_complement(problem.tangent(), blocks);
+    const Eigen::MatrixXd M = pressure_mass_matrix(dof_handler, blocks);
     Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eigen(S, M);
     const double G     = 2. * (parameters.material.C1 + parameters.material.C2);
     const double beta2 = G * eigen.eigenvalues().minCoeff();
@@ -175,26 +226,20 @@ namespace
         // The weakest pressure mode, one value per cell.
         Eigen::Index k;
         eigen.eigenvalues().minCoeff(&k);
-        std::vector<double> v(dof_handler.get_triangulation().n_active_cells());
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          {
-            cell->get_dof_indices(dofs);
-            for (unsigned int i = 0; i < dofs.size(); ++i)
-              if (fe.system_to_component_index(i).first == dim)
-                v[cell->active_cell_index()] =
-                  eigen.eigenvectors()(block_index[dofs[i]], k);
-          }
+        const std::vector<double> v =
+          cell_values(dof_handler, blocks, eigen.eigenvectors().col(k));
         *checkerboard = checkerboard_fraction(dof_handler, v, [](const auto &) {
           return true;
         });
       }
     std::cout << "  " << element << ", refinement " << refinements << ": "
-              << p_dofs.size()
+              << blocks.p_dofs.size()
               << " pressure DoFs, beta_h^2 = " << testing::num(beta2)
               << ", largest G lambda = "
               << testing::num(G * eigen.eigenvalues().maxCoeff()) << std::endl;
     return beta2;
   }
+
   /// Checkerboard fraction of the cell-mean pressure q in the nip (outer
   /// half of the cover, theta < 1.5 theta0) of the parabolic-pressure scene.
   double

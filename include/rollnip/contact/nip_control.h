@@ -4,6 +4,7 @@
 #include <rollnip/contact/inverse_contact.h>
 #include <rollnip/parameters.h>
 
+#include <string>
 #include <vector>
 
 namespace rollnip
@@ -82,6 +83,35 @@ namespace rollnip
     /// The controlled quantity of a nip.
     double
     controlled(const ContactResult &r) const;
+
+    /// The name of the controlled quantity, "P" or "u0".
+    std::string
+    quantity() const;
+
+    /// The unit of the controlled quantity, with a leading space.
+    std::string
+    unit() const;
+
+    /// The largest q reached and its theta0, for a refusal.
+    std::string
+    largest_reached() const;
+
+    /// @p r marked failed, its message why @p target is out of reach.
+    ContactResult
+    refuse(ContactResult r, const double target, const std::string &why) const;
+
+    /// The largest converged theta0 below @p theta, 0 if there is none.
+    double
+    converged_below(const double theta) const;
+
+    /// Adds the converged nip (@p theta, @p q), keeping the order by theta.
+    void
+    remember(const double theta, const double q);
+
+    /// Why a target needing theta0 above @p theta_max, the mesh's largest
+    /// nip, is refused.
+    std::string
+    beyond_mesh(const double theta_max) const;
 
     InverseContact                  &contact;
     const Parameters::AllParameters &parameters;
