@@ -3,6 +3,7 @@
 #include <rollnip/engineering_inputs.h>
 #include <rollnip/material/hardness.h>
 #include <rollnip/material/material_table.h>
+#include <rollnip/parameter_entries.h>
 
 #include <cmath>
 #include <iomanip>
@@ -23,14 +24,6 @@ namespace rollnip
                        const std::string &doc)
       {
         prm.declare_entry(name, "", Patterns::Anything(), doc);
-      }
-
-      std::string
-      shortest(const double x)
-      {
-        std::ostringstream s;
-        s << x;
-        return s.str();
       }
 
       /// The number in entry @p name of subsection @p section (NaN when the
@@ -107,9 +100,10 @@ namespace rollnip
                              "thickness or Inner radius and Outer radius, "
                              "not both"));
       AssertThrow(t < 0.5 * D,
-                  ExcMessage("Geometry/Cover thickness (" + shortest(t) +
+                  ExcMessage("Geometry/Cover thickness (" +
+                             Parameters::number(t) +
                              " mm) must be less than half the Roll diameter (" +
-                             shortest(D) + " mm)"));
+                             Parameters::number(D) + " mm)"));
       geometry.outer_radius = 0.5 * D;
       geometry.inner_radius = 0.5 * D - t;
     }
@@ -131,12 +125,13 @@ namespace rollnip
                         "Scale of Hardness. Allowed: Shore A (Gent 1958), "
                         "IRHD (ISO 48) or P&J (Pusey & Jones, indentation in "
                         "1/100 mm)");
-      prm.declare_entry("C2/C1 ratio",
-                        "0",
-                        Patterns::Double(0.),
-                        "Split of E/6 between C1 and C2 when Hardness is "
-                        "given; 0 is neo-Hookean (in-plane results depend on "
-                        "C1 + C2 only). Allowed: a number >= 0");
+      Parameters::declare_documented(
+        prm,
+        "C2/C1 ratio",
+        "0",
+        Patterns::Double(0.),
+        "Split of E/6 between C1 and C2 when Hardness is given; 0 is "
+        "neo-Hookean (in-plane results depend on C1 + C2 only)");
     }
 
     void
@@ -167,8 +162,8 @@ namespace rollnip
                   ExcMessage("Material/Hardness = '" + text + "' " +
                              Hardness::to_string(scale) +
                              " is outside the range of its modulus relation, " +
-                             shortest(range.min) + " to " +
-                             shortest(range.max)));
+                             Parameters::number(range.min) + " to " +
+                             Parameters::number(range.max)));
       const double E = Hardness::youngs_modulus(value, scale);
       const auto   c =
         Hardness::mooney_rivlin_from_modulus(E, prm.get_double("C2/C1 ratio"));
@@ -181,7 +176,7 @@ namespace rollnip
       material.layer_C1             = {c.C1};
       material.layer_C2             = {c.C2};
       material.hardness_modulus     = E;
-      material.hardness_description = shortest(value) + " " +
+      material.hardness_description = Parameters::number(value) + " " +
                                       Hardness::to_string(scale) + ", " +
                                       Hardness::source(scale);
     }
@@ -201,12 +196,13 @@ namespace rollnip
                         "in the nip report. Allowed: N/mm, kN/m (the same "
                         "number) or pli (pound-force per linear inch, "
                         "0.17512685 N/mm)");
-      prm.declare_entry("Surface speed",
-                        "0",
-                        Patterns::Double(0.),
-                        "Surface speed of the roll [m/min] for the dwell "
-                        "time 2b / v in the nip report; 0: not reported. "
-                        "Allowed: a number >= 0");
+      Parameters::declare_documented(
+        prm,
+        "Surface speed",
+        "0",
+        Patterns::Double(0.),
+        "Surface speed of the roll [m/min] for the dwell time 2b / v in the "
+        "nip report; 0: not reported");
     }
 
     void

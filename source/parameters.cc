@@ -3,6 +3,7 @@
 #include <rollnip/cost_estimate.h>
 #include <rollnip/engineering_inputs.h>
 #include <rollnip/loading/pressure_load.h>
+#include <rollnip/parameter_entries.h>
 #include <rollnip/parameters.h>
 
 #include <filesystem>
@@ -34,37 +35,34 @@ namespace rollnip
         return BoundaryCondition::pressure;
       }
 
-      /// Declares an entry whose documentation ends with its allowed values,
-      /// so that --print-parameters shows the range of every entry.
-      void
-      declare_documented(ParameterHandler            &prm,
-                         const std::string           &name,
-                         const std::string           &default_value,
-                         const Patterns::PatternBase &pattern,
-                         const std::string           &doc)
-      {
-        prm.declare_entry(name,
-                          default_value,
-                          pattern,
-                          doc + ". Allowed: " +
-                            pattern.description(Patterns::PatternBase::Text));
-      }
-
       constexpr double degree = numbers::PI / 180.;
       /// Defaults of the contact keys that only a contact scene reads.
       const char *const default_values          = "8";
       const char *const default_indenter_radius = "76.2";
 
-      /// A value for a message, in the shortest form (1e+300, not 300
-      /// digits).
-      std::string
-      number(const double x)
-      {
-        std::ostringstream s;
-        s << x;
-        return s.str();
-      }
     } // namespace
+
+    void
+    declare_documented(ParameterHandler            &prm,
+                       const std::string           &name,
+                       const std::string           &default_value,
+                       const Patterns::PatternBase &pattern,
+                       const std::string           &doc)
+    {
+      prm.declare_entry(name,
+                        default_value,
+                        pattern,
+                        doc + ". Allowed: " +
+                          pattern.description(Patterns::PatternBase::Text));
+    }
+
+    std::string
+    number(const double x)
+    {
+      std::ostringstream s;
+      s << x;
+      return s.str();
+    }
 
     std::string
     to_string(const BoundaryCondition condition)
