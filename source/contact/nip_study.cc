@@ -279,7 +279,13 @@ namespace rollnip
                                 n + 1,
                                 parameters.output.write_vtu);
           if (series && row.nonlinear.converged)
-            pvd.add(sweep_time(parameters, row.nonlinear), nip + vtu);
+            {
+              pvd.add(sweep_time(parameters, row.nonlinear), nip + vtu);
+              if (parameters.mating_roll.covered)
+                pvd.add(sweep_time(parameters, row.nonlinear),
+                        nip + "/mating_roll" + vtu,
+                        1);
+            }
           if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
             write_indenter_outline(parameters,
                                    row.nonlinear,
@@ -306,6 +312,10 @@ namespace rollnip
                   linear->write_vtu(n + 1, 1.);
                   linear_pvd.add(sweep_time(parameters, row.nonlinear),
                                  nip + "/linear" + vtu);
+                  if (parameters.mating_roll.covered)
+                    linear_pvd.add(sweep_time(parameters, row.nonlinear),
+                                   nip + "/linear/mating_roll" + vtu,
+                                   1);
                 }
             }
           rows.push_back(row);

@@ -271,6 +271,11 @@ namespace rollnip
                                 const bool           with_vtu)
   {
     mate.set_output_directory(directory + "/mating_roll");
+    // In the first roll's frame: its centre at the distance D of the
+    // centres, half a turn about D/2 on the line of centres.
+    const double D = parameters.geometry.outer_radius +
+                     mate_parameters.geometry.outer_radius - result.indentation;
+    mate.set_vtu_placement(Point<dim>(D / 2, 0.));
     if (with_vtu)
       mate.write_vtu(step, 1.);
     RunStatus status;
