@@ -491,21 +491,28 @@ namespace rollnip
       }
     if (result.converged)
       {
-        converged_state    = problem.body().owned_solution();
-        converged_pressure = applied_pressure;
-        converged_theta0   = zone.theta0;
+        converged.state    = problem.body().owned_solution();
+        converged.pressure = applied_pressure;
+        converged.theta0   = zone.theta0;
         return;
       }
-    // Undo the failed nip: the next one starts from the last solution (or
-    // from scratch if there is none).
+    restore_converged(Converged(converged));
+  }
+
+  void
+  InverseContact::restore_converged(const Converged &nip)
+  {
+    converged = nip;
+    // The next nip starts from the last converged one (or from scratch if
+    // there is none).
     TrilinosWrappers::MPI::Vector start(problem.body().owned_solution());
-    if (converged_pressure)
-      start = converged_state;
+    if (converged.pressure)
+      start = converged.state;
     else
       start = 0;
     problem.set_solution(start);
-    applied_pressure = converged_pressure;
-    applied_theta0   = converged_theta0;
+    applied_pressure = converged.pressure;
+    applied_theta0   = converged.theta0;
   }
 
   void

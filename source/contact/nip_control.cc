@@ -262,8 +262,8 @@ namespace rollnip
                             "just above the largest converged one (" +
                               r.message + ")");
             pcout << "Outer iteration " << it << ": theta0 = " << std::fixed
-                  << std::setprecision(6) << theta * deg
-                  << " deg failed; stepping back" << std::endl;
+                  << std::setprecision(6) << theta * deg << " deg failed ("
+                  << r.message << "); stepping back" << std::endl;
             theta = below > 0 ? 0.5 * (below + theta) : 0.5 * theta;
             continue;
           }

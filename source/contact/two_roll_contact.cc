@@ -158,8 +158,9 @@ namespace rollnip
   }
 
   void
-  TwoRollContact::restore()
+  TwoRollContact::restore(const InverseContact::Converged &roll_nip)
   {
+    contact.restore_converged(roll_nip);
     if (mate_converged_pressure)
       mate.set_solution(mate_converged);
     else
@@ -181,6 +182,9 @@ namespace rollnip
     if (mate.has_nip_fitted_mesh())
       mate.fit_mesh_to_nip(mate_nip_angle(parameters, theta0));
     mate_nodes = outer_surface_nodes(mate.dofs());
+    // The passes converge the roll's contact many times: a failed nip goes
+    // back to this one.
+    const InverseContact::Converged last = contact.last_converged();
     // Two half-spaces: the exact relaxation is G_mate / (G + G_mate).
     const double G     = surface_shear_modulus(parameters.material);
     const double G_m   = surface_shear_modulus(mate_parameters.material);
@@ -260,7 +264,7 @@ namespace rollnip
         mate_converged_pressure = mate_pressure;
       }
     else
-      restore();
+      restore(last);
     return result;
   }
 

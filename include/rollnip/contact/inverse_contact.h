@@ -47,6 +47,26 @@ namespace rollnip
     double
     max_nip_angle() override;
 
+    /// The state, pressure and theta0 of a converged nip.
+    struct Converged
+    {
+      TrilinosWrappers::MPI::Vector state;
+      std::function<double(double)> pressure; ///< empty: none yet
+      double                        theta0 = 0;
+    };
+
+    /// The last converged nip.
+    const Converged &
+    last_converged() const
+    {
+      return converged;
+    }
+
+    /// Back to @p nip, which becomes the last converged one (an outer
+    /// iteration that failed after this one converged).
+    void
+    restore_converged(const Converged &nip);
+
     /// The conformity tolerance of its iteration, a fraction of u0.
     double
     tolerance() const
@@ -170,10 +190,8 @@ namespace rollnip
     /// first solve) and its theta0: the next solve starts from them.
     std::function<double(double)> applied_pressure;
     double                        applied_theta0 = 0;
-    /// The state, pressure and theta0 of the last converged nip.
-    TrilinosWrappers::MPI::Vector converged_state;
-    std::function<double(double)> converged_pressure;
-    double                        converged_theta0 = 0;
+    /// The last converged nip.
+    Converged converged;
   };
 
   /// contact.txt (scalars and checks) and contact_pressure.csv (f at the

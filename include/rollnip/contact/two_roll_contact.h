@@ -80,9 +80,9 @@ namespace rollnip
     void
     measure_mate(ContactResult &result) const;
 
-    /// Back to the last converged pair of states.
+    /// Back to the last converged pair of states, @p roll_nip the roll's.
     void
-    restore();
+    restore(const InverseContact::Converged &roll_nip);
 
     const Parameters::AllParameters    &parameters;
     const Parameters::AllParameters     mate_parameters;
