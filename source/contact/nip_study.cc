@@ -10,6 +10,7 @@
 #include <rollnip/interrupt.h>
 #include <rollnip/material/material_table.h>
 #include <rollnip/output/atomic_file.h>
+#include <rollnip/output/polyline_vtp.h>
 #include <rollnip/output/sweep_pvd.h>
 
 #include <algorithm>
@@ -26,28 +27,60 @@ namespace rollnip
   {
     constexpr double deg = 180. / numbers::PI;
 
-    /// Points of the indenter outline near the nip (deformed configuration)
-    /// for the plot of the deformed surface (the paper's Fig. 7).
-    void
-    write_indenter_outline(const Parameters::AllParameters &p,
-                           const ContactResult             &r,
-                           const std::string               &file)
+    /// Points of the indenter outline near the nip (deformed configuration).
+    std::vector<Point<dim>>
+    indenter_outline(const Parameters::AllParameters &p, const ContactResult &r)
     {
       const double R0    = p.geometry.outer_radius;
       const double Rb    = p.contact.indenter_radius;
       const double y_max = std::min(3 * std::max(r.half_chord, 1e-3), R0);
-      write_atomically(file, [&](std::ostream &out) {
-        out << "x_mm,y_mm\n" << std::setprecision(10);
-        for (unsigned int i = 0; i <= 200; ++i)
+      std::vector<Point<dim>> points;
+      for (unsigned int i = 0; i <= 200; ++i)
+        {
+          const double y = y_max * i / 200.;
+          const double x = std::isfinite(Rb)
+                             ? R0 + Rb - r.indentation -
+                                 std::sqrt(std::max(0., Rb * Rb - y * y))
+                             : R0 - r.indentation;
+          points.emplace_back(x, y);
+        }
+      return points;
+    }
+
+    /// The nip's pieces that are not cells of the mesh (collective, rank 0
+    /// writes): the rigid indenter's outline near the nip as indenter.csv
+    /// (for the plot of the deformed surface) and indenter.vtp, and the
+    /// contact pressure along the deformed surface as contact_pressure.vtp.
+    void
+    write_nip_pieces(const RollProblem               &problem,
+                     const Parameters::AllParameters &p,
+                     const ContactResult             &r,
+                     const std::string               &dir)
+    {
+      const SurfaceData data = problem.surface_data(1.);
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+        return;
+      if (!p.mating_roll.covered)
+        {
+          const auto outline = indenter_outline(p, r);
+          write_atomically(dir + "/indenter.csv", [&](std::ostream &out) {
+            out << "x_mm,y_mm\n" << std::setprecision(10);
+            for (const auto &x : outline)
+              out << x[0] << ',' << x[1] << '\n';
+          });
+          write_polyline_vtp(dir + "/indenter.vtp", outline, {});
+        }
+      std::vector<Point<dim>> points;
+      std::vector<double>     pressure;
+      for (const auto &s : data.outer)
+        if (s.theta <= r.theta0 * (1 + 1e-12))
           {
-            const double y = y_max * i / 200.;
-            const double x = std::isfinite(Rb)
-                               ? R0 + Rb - r.indentation -
-                                   std::sqrt(std::max(0., Rb * Rb - y * y))
-                               : R0 - r.indentation;
-            out << x << ',' << y << '\n';
+            points.emplace_back(s.x, s.y);
+            pressure.push_back(s.applied_pressure);
           }
-      });
+      write_polyline_vtp(dir + "/contact_pressure.vtp",
+                         points,
+                         {{"contact_pressure_MPa", pressure}});
     }
   } // namespace
 
@@ -239,6 +272,25 @@ namespace rollnip
         }
     }
 
+    /// The pieces of nip directory @p nip in the sweep's PVD, at the nip's
+    /// control value: the roll (part 0), the mating roll or the rigid
+    /// indenter (1), the contact pressure (2).
+    void
+    add_to_sweep(SweepPvd                        &pvd,
+                 const Parameters::AllParameters &parameters,
+                 const ContactResult             &r,
+                 const std::string               &nip,
+                 const std::string               &vtu)
+    {
+      const double time = sweep_time(parameters, r);
+      pvd.add(time, nip + vtu);
+      pvd.add(time,
+              nip + (parameters.mating_roll.covered ? "/mating_roll" + vtu
+                                                    : "/indenter.vtp"),
+              1);
+      pvd.add(time, nip + "/contact_pressure.vtp", 2);
+    }
+
     /// Solves the nips of Contact/Values in turn, writes and evaluates
     /// each, and adds the converged ones to @p rows, with their linear
     /// companions if @p linear is given; returns why the sweep stopped,
@@ -278,18 +330,9 @@ namespace rollnip
                                 dir,
                                 n + 1,
                                 parameters.output.write_vtu);
+          write_nip_pieces(nonlinear, parameters, row.nonlinear, dir);
           if (series && row.nonlinear.converged)
-            {
-              pvd.add(sweep_time(parameters, row.nonlinear), nip + vtu);
-              if (parameters.mating_roll.covered)
-                pvd.add(sweep_time(parameters, row.nonlinear),
-                        nip + "/mating_roll" + vtu,
-                        1);
-            }
-          if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-            write_indenter_outline(parameters,
-                                   row.nonlinear,
-                                   dir + "/indenter.csv");
+            add_to_sweep(pvd, parameters, row.nonlinear, nip, vtu);
           if (!row.nonlinear.converged)
             return why_stopped(row.nonlinear.message,
                                n + 1,

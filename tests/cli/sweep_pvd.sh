@@ -6,8 +6,10 @@
 # values equal to the nip loads of nip_characteristic.csv (so increasing),
 # files that exist, and the time's meaning in a comment. The .vtu pieces
 # carry the Cauchy stress and the Green-Lagrange strain as 9-component
-# tensors (ParaView's tensor filters need them whole). A two-roll sweep
-# has the mating roll as part 1 of each nip.
+# tensors (ParaView's tensor filters need them whole). Each nip of the
+# nonlinear sweep also has the indenter outline (part 1) and the contact
+# pressure along the deformed surface (part 2) as polylines; a two-roll
+# sweep has the mating roll as part 1.
 #
 # Usage: bash sweep_pvd.sh ROLLNIP
 set -euo pipefail
@@ -48,10 +50,27 @@ for name in ["out/solution_sweep.pvd", "out/solution_sweep_linear.pvd"]:
     text = open(name).read()
     if "time = line load P [N/mm]" not in text:
         print(f"FAIL: {name} does not say what its time is"); ok = False
-    sets = list(ET.parse(name).iter("DataSet"))
+    every = list(ET.parse(name).iter("DataSet"))
+    sets = [d for d in every if d.get("part") == "0"]
     times = [float(d.get("timestep")) for d in sets]
     if len(sets) != 3:
-        print(f"FAIL: {name} has {len(sets)} datasets, not 3"); ok = False
+        print(f"FAIL: {name} has {len(sets)} part-0 datasets, not 3"); ok = False
+    # The nonlinear sweep adds the indenter and the contact pressure.
+    pieces = {"out/solution_sweep.pvd": [("1", "indenter.vtp"), ("2", "contact_pressure.vtp")]}.get(name, [])
+    for part, file in pieces:
+        got = [d for d in every if d.get("part") == part]
+        if [float(d.get("timestep")) for d in got] != times or \
+           not all(d.get("file").endswith(file) and os.path.isfile(os.path.join("out", d.get("file"))) for d in got):
+            print(f"FAIL: {name} has no {file} as part {part} of every nip"); ok = False
+            continue
+        tree = ET.parse(os.path.join("out", got[-1].get("file")))
+        n = int(tree.find(".//Piece").get("NumberOfPoints"))
+        if n < 2:
+            print(f"FAIL: {got[-1].get('file')} has {n} points"); ok = False
+        if file == "contact_pressure.vtp":
+            values = [float(v) for v in tree.find(".//PointData/DataArray").text.split()]
+            if len(values) != n or not max(values) > 0 or min(values) < 0:
+                print(f"FAIL: contact_pressure_MPa {values[:3]}... is not a pressure at {n} points"); ok = False
     if any(abs(t - p) > 1e-6 * p for t, p in zip(times, loads)):
         print(f"FAIL: {name} times {times} are not the loads {loads}"); ok = False
     if times != sorted(times):
@@ -69,7 +88,7 @@ for name in ["out/solution_sweep.pvd", "out/solution_sweep_linear.pvd"]:
     print(f"  {name}: times {times}")
 sys.exit(0 if ok else 1)
 PY
-pass "two sweep PVDs, one dataset per nip at the nip loads, tensors in the pieces"
+pass "two sweep PVDs, one dataset per nip at the nip loads, tensors in the pieces, the indenter and the contact pressure as parts 1 and 2"
 
 # Two covered rolls: the mating roll is part 1 of each nip, at the same time.
 cat > two.prm <<PRM
@@ -100,11 +119,12 @@ python3 - <<'PY' || fail "the two-roll sweep PVD does not hold both rolls"
 import os, sys, xml.etree.ElementTree as ET
 sets = list(ET.parse("two/solution_sweep.pvd").iter("DataSet"))
 parts = [(float(d.get("timestep")), d.get("part"), d.get("file")) for d in sets]
-ok = [p[1] for p in parts] == ["0", "1", "0", "1"] and \
-     parts[0][0] == parts[1][0] and parts[2][0] == parts[3][0] and \
+ok = [p[1] for p in parts] == ["0", "1", "2", "0", "1", "2"] and \
+     parts[0][0] == parts[1][0] == parts[2][0] and \
+     parts[3][0] == parts[4][0] == parts[5][0] and \
      all("mating_roll/" in p[2] for p in parts if p[1] == "1") and \
      all(os.path.isfile(os.path.join("two", p[2])) for p in parts)
 print(f"  two/solution_sweep.pvd: {parts}")
 sys.exit(0 if ok else 1)
 PY
-pass "a two-roll sweep: the mating roll is part 1 of every nip"
+pass "a two-roll sweep: the mating roll is part 1 and the contact pressure part 2 of every nip"
