@@ -12,18 +12,18 @@
 # A nip's linear-theory tables (OUTPUT_DIR/.../linear/) are drawn when present.
 #
 # Figures (NAME.png and NAME.svg):
-#   contact_pressure             f(theta), knots marked, nonlinear and linear (paper Fig. 5)
+#   contact_pressure             f(theta), knots marked, nonlinear and linear
 #   contact_pressure_normalised  the same, f / peak f against x2 / b (deformed nip
 #                                coordinate over half-chord) with the Hertz shape;
 #                                prints each curve's largest departure from it
 #   contact_pressure_over_E      f / E against theta, only if ROLLNIP_E_MPA is set
 #   nip_pressure                 imposed f and the normal traction from the stress
 #                                against the deformed nip coordinate x2
-#   bond_stresses                sigma_rr and sigma_rtheta on the bond surface (Fig. 3, 6)
+#   bond_stresses                sigma_rr and sigma_rtheta on the bond surface, nonlinear and linear
 #   bond_stress_decay            |sigma_rr| and |sigma_rtheta| on the bond surface over
 #                                their peaks, logarithmic (the truncation check)
 #   deformed_surface[_nip-NN]    deformed and undeformed outer surface with the
-#                                indenter, near the nip, equal scales (Fig. 7)
+#                                indenter, near the nip, equal scales
 #   nip_characteristic           P against the half-chord b: nonlinear, linear (at its
 #                                own b), Hertz, thin layer, log-log
 #   nip_report                   nip width 2b and peak and mean pressure against the
