@@ -4,7 +4,8 @@ no linear companion, no VTU) at the extremes of its parameters and prints a
 Markdown table: what each scene gave, or the message it stopped with.
 doc/extremes.md holds the table of one run and what it means.
 
-Usage: python3 benchmarks/extremes.py        (about five minutes)
+Usage: python3 benchmarks/extremes.py [TEXT]   (about five minutes)
+    TEXT  run only the scenes whose name contains it, e.g. "rolls"
 Uses build/rollnip, or $ROLLNIP_BIN.
 """
 
@@ -18,8 +19,11 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ROLLNIP = os.environ.get("ROLLNIP_BIN", os.path.join(ROOT, "build", "rollnip"))
 BASE = os.path.join(ROOT, "parameters", "batra1980.prm")
 
-# (name, overrides as {subsection: {entry: value}})
+# (name, overrides as {subsection: {entry: value or {entry: value}}})
 R0 = 60.7
+# The mating roll's mesh as the default roll's (parameters/batra1980.prm).
+MATE_MESH = {"Radial cells": "6", "Circumferential cells": "24",
+             "Circumferential grading": "10", "Global refinements": "2"}
 CASES = [
     ("default: h/R0 = 0.22, theta0 = 8 deg", {}),
     ("thin cover h/R0 = 0.02, theta0 = 4 deg",
@@ -48,6 +52,16 @@ CASES = [
     ("two equal layers (= default)",
      {"Material": {"C1": "0.25, 0.25", "C2": "0.25, 0.25", "Layer thicknesses": "6.75, 6.75"}}),
     ("flat indenter (Rbar = inf)", {"Contact": {"Indenter radius": "inf"}}),
+    ("two equal covered rolls (= flat indenter)",
+     {"Mating roll": {"Type": "covered roll", "Mesh": MATE_MESH}}),
+    ("soft roll against a 76.2 mm roll with a 16.2 mm cover of G = 30 MPa",
+     {"Mating roll": {"Type": "covered roll", "Mesh": MATE_MESH,
+                      "Geometry": {"Inner radius": "60", "Outer radius": "76.2"},
+                      "Material": {"C1": "10", "C2": "5"}}}),
+    ("soft roll against a 76.2 mm roll with a 16.2 mm cover of G = 1500 MPa (= rigid)",
+     {"Mating roll": {"Type": "covered roll", "Mesh": MATE_MESH,
+                      "Geometry": {"Inner radius": "60", "Outer radius": "76.2"},
+                      "Material": {"C1": "500", "C2": "250"}}}),
     ("small indenter Rbar = 5 mm, theta0 = 2 deg",
      {"Contact": {"Indenter radius": "5", "Values": "2"}}),
     ("small indenter Rbar = 5 mm, theta0 = 4 deg",
@@ -60,6 +74,20 @@ CASES = [
                                 "Material": {"C1": "250000", "C2": "250000"},
                                 "Contact": {"Indenter radius": "0.0762"}}),
 ]
+
+
+def subsections(entries, indent=""):
+    """.prm text of {subsection: {entry: value or nested subsection}}."""
+    text = ""
+    for section, body in entries.items():
+        text += f"{indent}subsection {section}\n"
+        for k, v in body.items():
+            if isinstance(v, dict):
+                text += subsections({k: v}, indent + "  ")
+            else:
+                text += f"{indent}  set {k} = {v}\n"
+        text += f"{indent}end\n"
+    return text
 
 
 def key_values(path):
@@ -80,7 +108,8 @@ def main():
     print("| scene | exit | theta0 deg | P (N/mm) | u0 (mm) | max strain | min J | conformity | P from traction | wall s | message |")
     print("|---|---|---|---|---|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory(prefix="rollnip-extremes.") as tmp:
-        for name, overrides in CASES:
+        only = sys.argv[1] if len(sys.argv) > 1 else ""
+        for name, overrides in (c for c in CASES if only in c[0]):
             out = os.path.join(tmp, "out")
             text = open(BASE).read() + "\n# --- extremes overrides ---\n"
             overrides = {**overrides}
@@ -89,11 +118,7 @@ def main():
                                     **overrides["Contact"]}
             overrides["Output"] = {"Directory": out, "Write VTU": "false",
                                    "Print timing": "false"}
-            for section, entries in overrides.items():
-                text += f"subsection {section}\n"
-                for k, v in entries.items():
-                    text += f"  set {k} = {v}\n"
-                text += "end\n"
+            text += subsections(overrides)
             prm = os.path.join(tmp, "run.prm")
             open(prm, "w").write(text)
             subprocess.run(["rm", "-rf", out])

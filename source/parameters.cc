@@ -5,6 +5,7 @@
 #include <rollnip/loading/pressure_load.h>
 #include <rollnip/parameter_entries.h>
 #include <rollnip/parameters.h>
+#include <rollnip/run_errors.h>
 
 #include <filesystem>
 #include <fstream>
@@ -736,6 +737,60 @@ namespace rollnip
     }
 
     void
+    MatingRoll::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Mating roll");
+      declare_documented(prm,
+                         "Type",
+                         "rigid",
+                         Patterns::Selection("rigid|covered roll"),
+                         "rigid: the circle or plane of Contact/Indenter "
+                         "radius; covered roll: a second covered roll, "
+                         "described by the subsections below (same entries "
+                         "as the top-level ones), both rolls deformable");
+      declare_documented(prm,
+                         "Maximum iterations",
+                         "60",
+                         Patterns::Integer(1),
+                         "Outer iterations between the two rolls per nip "
+                         "(each one a contact solve of the first roll and "
+                         "a solve of the mating roll)");
+      Geometry::declare(prm);
+      Material::declare(prm);
+      Mesh::declare(prm);
+      prm.leave_subsection();
+    }
+
+    void
+    MatingRoll::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Mating roll");
+      covered        = prm.get("Type") == "covered roll";
+      max_iterations = prm.get_integer("Maximum iterations");
+      geometry.parse(prm);
+      material.parse(prm);
+      mesh.parse(prm);
+      prm.leave_subsection();
+    }
+
+    AllParameters
+    AllParameters::mating_roll_parameters() const
+    {
+      AllParameters mate = *this;
+      mate.geometry      = mating_roll.geometry;
+      mate.material      = mating_roll.material;
+      mate.mesh          = mating_roll.mesh;
+      // One theory for both rolls (the linear companion switches both).
+      mate.material.theory         = material.theory;
+      mate.mating_roll.covered     = false;
+      mate.contact.indenter_radius = geometry.outer_radius;
+      mate.contact.compare_linear  = false;
+      mate.output.directory        = output.directory + "/mating_roll";
+      mate.output.print_timing     = false;
+      return mate;
+    }
+
+    void
     Study::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Study");
@@ -821,6 +876,7 @@ namespace rollnip
       LinearSolver::declare(prm);
       Output::declare(prm);
       Contact::declare(prm);
+      MatingRoll::declare(prm);
       Study::declare(prm);
     }
 
@@ -838,7 +894,22 @@ namespace rollnip
       linear_solver.parse(prm);
       output.parse(prm);
       contact.parse(prm);
+      mating_roll.parse(prm);
       study.parse(prm);
+      if (mating_roll.covered)
+        {
+          // The rigid indenter's radius would be silently ignored.
+          AssertThrow(contact.indenter_radius ==
+                        std::stod(default_indenter_radius),
+                      ExcMessage("Contact/Indenter radius (or diameter) "
+                                 "describes a rigid mating roll, but Mating "
+                                 "roll/Type = covered roll: remove it"));
+          AssertThrow(mating_roll.material.theory == material.theory,
+                      ExcMessage("Mating roll/Material/Theory differs from "
+                                 "Material/Theory: both rolls take one "
+                                 "theory"));
+          contact.indenter_radius = mating_roll.geometry.outer_radius;
+        }
     }
 
     void
@@ -868,6 +939,28 @@ namespace rollnip
       validate_contact();
       validate_mesh();
       validate_output();
+      validate_mating_roll();
+    }
+
+    void
+    AllParameters::validate_mating_roll() const
+    {
+      if (!mating_roll.covered)
+        return;
+      AssertThrow(contact.mode != ContactMode::none,
+                  ExcMessage("Mating roll/Type = covered roll needs a contact "
+                             "scene (Contact/Mode)"));
+      // Its entries are checked as a roll's, and named as its.
+      try
+        {
+          const AllParameters mate = mating_roll_parameters();
+          mate.validate_scene();
+          mate.validate_mesh();
+        }
+      catch (const ExceptionBase &e)
+        {
+          AssertThrow(false, ExcMessage("Mating roll/" + one_line_message(e)));
+        }
     }
 
     void

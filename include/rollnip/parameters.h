@@ -280,6 +280,24 @@ namespace rollnip
     };
 
     /// All parameters of a run, one member per subsection.
+    /// The roll the cover is pressed against, when it is a covered roll
+    /// rather than the rigid circle or plane of Contact/Indenter radius.
+    struct MatingRoll
+    {
+      bool covered = false;
+      /// Its cover, its mesh, and the outer iterations of the two-roll
+      /// contact (TwoRollContact).
+      Geometry     geometry;
+      Mesh         mesh;
+      Material     material;
+      unsigned int max_iterations = 60;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
     struct AllParameters
     {
       Geometry           geometry;
@@ -293,7 +311,14 @@ namespace rollnip
       LinearSolver       linear_solver;
       Output             output;
       Contact            contact;
+      MatingRoll         mating_roll;
       Study              study;
+
+      /// The scene of the covered mating roll: these parameters with its
+      /// geometry, material and mesh, its theory this roll's, output in
+      /// Output/Directory/mating_roll.
+      AllParameters
+      mating_roll_parameters() const;
 
       static void
       declare(ParameterHandler &prm);
@@ -324,6 +349,10 @@ namespace rollnip
       /// The constants and thicknesses of the layers of the cover.
       void
       validate_material() const;
+      /// The covered mating roll's scene, its messages prefixed "Mating
+      /// roll/" (validate()).
+      void
+      validate_mating_roll() const;
       /// Output directory, the number of nips and the size (validate()).
       void
       validate_output() const;

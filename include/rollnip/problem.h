@@ -120,6 +120,13 @@ namespace rollnip
     {
       writer.set_directory(directory);
     }
+    /// write_vtu() turns the body half a turn about @p centre (none: as
+    /// computed; OutputWriter::set_placement).
+    void
+    set_vtu_placement(const std::optional<Point<dim>> &centre)
+    {
+      writer.set_placement(centre);
+    }
     /// Whether run() prints one line per load step and writes VTU (on by
     /// default; the contact iteration turns it off for its inner solves).
     void

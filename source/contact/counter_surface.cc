@@ -1,5 +1,6 @@
 #include <rollnip/contact/counter_surface.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -67,6 +68,85 @@ namespace rollnip
   FlatPlane::radius() const
   {
     return std::numeric_limits<double>::infinity();
+  }
+
+  DeformedRoll::DeformedRoll(const double outer_radius, const double radius)
+      : R0(outer_radius)
+      , R_mate(radius)
+      , phi{0.}
+      , rho{radius}
+  {}
+
+  void
+  DeformedRoll::set_shape(const std::vector<Point<dim>> &nodes)
+  {
+    std::vector<std::pair<double, double>> polar;
+    for (const auto &y : nodes)
+      polar.emplace_back(std::atan2(std::abs(y[1]), y[0]), y.norm());
+    // Sorted by angle: a search needs it even where a node overtook its
+    // neighbour.
+    std::sort(polar.begin(), polar.end());
+    phi.clear();
+    rho.clear();
+    for (const auto &p : polar)
+      if (phi.empty() || p.first > phi.back())
+        {
+          phi.push_back(p.first);
+          rho.push_back(p.second);
+        }
+  }
+
+  std::pair<double, double>
+  DeformedRoll::surface_radius(const double angle) const
+  {
+    if (phi.size() < 2 || angle >= phi.back())
+      return {rho.back(), 0.};
+    const std::size_t j =
+      std::upper_bound(phi.begin(), phi.end(), angle) - phi.begin();
+    const std::size_t i     = j == 0 ? 0 : j - 1;
+    const double      slope = (rho[i + 1] - rho[i]) / (phi[i + 1] - phi[i]);
+    return {rho[i] + slope * (angle - phi[i]), slope};
+  }
+
+  Point<dim>
+  DeformedRoll::mate_point(const Point<dim> &x, const double u0) const
+  {
+    const double D = R0 - u0 + rho.front();
+    return Point<dim>(D - x[0], -x[1]);
+  }
+
+  Tensor<1, dim>
+  DeformedRoll::gap_gradient_y(const Point<dim> &y) const
+  {
+    const double r2 = y.norm_square(), r = std::sqrt(r2);
+    const double s     = y[1] < 0 ? -1. : 1.;
+    const double angle = std::atan2(std::abs(y[1]), y[0]);
+    // d phi / d y for phi = atan2(|y2|, y1).
+    Tensor<1, dim> dphi;
+    dphi[0] = -std::abs(y[1]) / r2;
+    dphi[1] = s * y[0] / r2;
+    return y / r - surface_radius(angle).second * dphi;
+  }
+
+  double
+  DeformedRoll::gap(const Point<dim> &x, const double u0) const
+  {
+    const Point<dim> y = mate_point(x, u0);
+    return y.norm() - surface_radius(std::atan2(std::abs(y[1]), y[0])).first;
+  }
+
+  Tensor<1, dim>
+  DeformedRoll::gap_gradient(const Point<dim> &x, const double u0) const
+  {
+    // y = (D - x1, -x2): d y / d x = -I.
+    return -gap_gradient_y(mate_point(x, u0));
+  }
+
+  double
+  DeformedRoll::gap_derivative_u0(const Point<dim> &x, const double u0) const
+  {
+    // d y1 / d u0 = d D / d u0 = -1.
+    return -gap_gradient_y(mate_point(x, u0))[0];
   }
 
   std::unique_ptr<CounterSurface>

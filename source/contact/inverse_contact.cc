@@ -2,6 +2,7 @@
 
 #include <rollnip/boundary_ids.h>
 #include <rollnip/contact/inverse_contact.h>
+#include <rollnip/contact/nip_estimates.h>
 #include <rollnip/geometry/angles.h>
 #include <rollnip/material/material_table.h>
 #include <rollnip/output/atomic_file.h>
@@ -56,11 +57,19 @@ namespace rollnip
 
   InverseContact::InverseContact(RollProblem                     &problem,
                                  const Parameters::AllParameters &parameters)
+      : InverseContact(problem,
+                       parameters,
+                       make_counter_surface(parameters.geometry.outer_radius,
+                                            parameters.contact.indenter_radius))
+  {}
+
+  InverseContact::InverseContact(
+    RollProblem                          &problem,
+    const Parameters::AllParameters      &parameters,
+    std::shared_ptr<const CounterSurface> counter_surface)
       : problem(problem)
       , parameters(parameters)
-      , counter_surface(
-          make_counter_surface(parameters.geometry.outer_radius,
-                               parameters.contact.indenter_radius))
+      , counter_surface(std::move(counter_surface))
       , pcout(std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       , conformity_tolerance(
           parameters.contact.mode == Parameters::ContactMode::nip_angle
@@ -73,50 +82,14 @@ namespace rollnip
   void
   InverseContact::collect_surface_nodes()
   {
-    std::vector<double> flat;
-    for (const auto &cell : problem.dofs().active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              cell->face(f)->boundary_id() == BoundaryIds::outer_arc)
-            for (unsigned int v = 0; v < 2; ++v)
-              {
-                const Point<dim> X     = cell->face(f)->vertex(v);
-                const double     theta = reference_angle(X);
-                flat.insert(flat.end(),
-                            {theta,
-                             X[0],
-                             X[1],
-                             double(cell->face(f)->vertex_dof_index(v, 0)),
-                             double(cell->face(f)->vertex_dof_index(v, 1))});
-              }
-    std::map<long long, SurfaceNode> unique;
-    for (const auto &part : Utilities::MPI::all_gather(MPI_COMM_WORLD, flat))
-      for (std::size_t i = 0; i < part.size(); i += 5)
-        unique[std::llround(part[i] * 1e9)] =
-          SurfaceNode{part[i],
-                      Point<dim>(part[i + 1], part[i + 2]),
-                      {types::global_dof_index(part[i + 3]),
-                       types::global_dof_index(part[i + 4])}};
-    nodes.clear();
-    for (const auto &entry : unique)
-      nodes.push_back(entry.second);
+    nodes = outer_surface_nodes(problem.dofs());
   }
 
   std::vector<Tensor<1, dim>>
   InverseContact::nodal_values(const TrilinosWrappers::MPI::Vector &v) const
   {
-    std::vector<double> values(dim * nodes.size(), 0.);
-    const IndexSet     &owned = problem.locally_owned();
-    for (unsigned int i = 0; i < nodes.size(); ++i)
-      for (unsigned int d = 0; d < dim; ++d)
-        if (owned.is_element(nodes[i].dof[d]))
-          values[dim * i + d] = v[nodes[i].dof[d]];
-    Utilities::MPI::sum(values, MPI_COMM_WORLD, values);
-    std::vector<Tensor<1, dim>> u(nodes.size());
-    for (unsigned int i = 0; i < nodes.size(); ++i)
-      for (unsigned int d = 0; d < dim; ++d)
-        u[i][d] = values[dim * i + d];
+    std::vector<Tensor<1, dim>> u =
+      surface_values(nodes, v, problem.locally_owned());
     // Linear theory measures the gap at the reference point along its
     // normal (doc/intro.md eq. 7.3): the tangential displacement moves no
     // point into or away from the indenter. It is not small next to the
@@ -203,15 +176,13 @@ namespace rollnip
   void
   InverseContact::initial_pressure(const Zone &zone, Iterate &iterate) const
   {
-    // A Hertz-like parabola with the peak pressure of a rigid cylinder on
-    // an incompressible half-space, E* = 4 G.
-    const double R0         = parameters.geometry.outer_radius;
-    const double G          = surface_shear_modulus(parameters.material);
-    const double R_eff      = counter_surface->is_flat()
-                                ? R0
-                                : 1. / (1. / R0 + 1. / counter_surface->radius());
-    const double half_width = R0 * std::sin(zone.theta0);
-    const double p_hertz    = 4 * G * half_width / (2 * R_eff);
+    // A Hertz-like parabola with the peak pressure E* b / (2 R) of two
+    // cylinders (the mating one rigid or covered).
+    const double half_width =
+      parameters.geometry.outer_radius * std::sin(zone.theta0);
+    const double p_hertz = NipEstimates::contact_modulus(parameters) *
+                           half_width /
+                           (2 * NipEstimates::effective_radius(parameters));
     iterate.a.assign(zone.m, 0.);
     iterate.f_from.assign(zone.m, 0.);
     for (unsigned int k = 0; k < zone.m; ++k)
@@ -520,21 +491,28 @@ namespace rollnip
       }
     if (result.converged)
       {
-        converged_state    = problem.body().owned_solution();
-        converged_pressure = applied_pressure;
-        converged_theta0   = zone.theta0;
+        converged.state    = problem.body().owned_solution();
+        converged.pressure = applied_pressure;
+        converged.theta0   = zone.theta0;
         return;
       }
-    // Undo the failed nip: the next one starts from the last solution (or
-    // from scratch if there is none).
+    restore_converged(Converged(converged));
+  }
+
+  void
+  InverseContact::restore_converged(const Converged &nip)
+  {
+    converged = nip;
+    // The next nip starts from the last converged one (or from scratch if
+    // there is none).
     TrilinosWrappers::MPI::Vector start(problem.body().owned_solution());
-    if (converged_pressure)
-      start = converged_state;
+    if (converged.pressure)
+      start = converged.state;
     else
       start = 0;
     problem.set_solution(start);
-    applied_pressure = converged_pressure;
-    applied_theta0   = converged_theta0;
+    applied_pressure = converged.pressure;
+    applied_theta0   = converged.theta0;
   }
 
   void
@@ -560,6 +538,17 @@ namespace rollnip
           << "min_pressure_MPa = " << result.min_pressure << '\n'
           << "conformity_max_gap_over_u0 = " << result.conformity << '\n'
           << "penetration_outside_over_u0 = " << result.penetration << '\n';
+      if (result.two_rolls)
+        out << "# two covered rolls: indentation_u0_mm is the approach of "
+               "the centres\n"
+            << "roll_indentation_mm = " << result.roll_indentation << '\n'
+            << "mating_roll_indentation_mm = " << result.mate_indentation
+            << '\n'
+            << "mating_roll_nip_load_P_N_per_mm = " << result.mate_nip_load
+            << '\n'
+            << "mating_roll_penetration_over_u0 = " << result.mate_penetration
+            << '\n'
+            << "two_roll_passes = " << result.outer_iterations << '\n';
     });
     write_atomically(directory + "/contact_pressure.csv",
                      [&](std::ostream &out) {

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <rollnip/contact/nip_control.h>
+#include <rollnip/contact/nip_estimates.h>
 #include <rollnip/interrupt.h>
 #include <rollnip/material/material_table.h>
 
@@ -29,8 +30,7 @@ namespace rollnip
     constexpr double step_back_resolution = 1e-2;
   } // namespace
 
-  NipControl::NipControl(InverseContact                  &contact,
-                         const Parameters::AllParameters &p)
+  NipControl::NipControl(NipSolver &contact, const Parameters::AllParameters &p)
       : contact(contact)
       , parameters(p)
       , by_load(p.contact.mode == Parameters::ContactMode::load)
@@ -45,19 +45,21 @@ namespace rollnip
   double
   NipControl::first_guess(const double target) const
   {
-    const auto  &g  = parameters.geometry;
-    const double R0 = g.outer_radius, h = R0 - g.inner_radius;
-    const double Rb = parameters.contact.indenter_radius;
-    const double R  = std::isfinite(Rb) ? 1. / (1. / R0 + 1. / Rb) : R0;
-    const double G  = surface_shear_modulus(parameters.material);
+    const double R0 = parameters.geometry.outer_radius;
+    const double R  = NipEstimates::effective_radius(parameters);
     double       b;
     if (by_load)
       {
         // Hertz (E* = 4 G) and the thin layer give too wide a nip for a
         // bonded layer of finite thickness: start below both.
-        const double b_hertz = std::sqrt(target * R / (numbers::PI * G));
-        const double b_thin  = std::pow(7.5 * R * h * h * h * target / G, 0.2);
-        b                    = 0.7 * std::min(b_hertz, b_thin);
+        const double b_hertz =
+          std::sqrt(4 * target * R /
+                    (numbers::PI * NipEstimates::contact_modulus(parameters)));
+        const double b_thin =
+          std::pow(7.5 * R * NipEstimates::thin_layer_compliance(parameters) *
+                     target,
+                   0.2);
+        b = 0.7 * std::min(b_hertz, b_thin);
       }
     else
       b = std::sqrt(2 * R * target); // the chord of the geometric overlap
@@ -260,8 +262,8 @@ namespace rollnip
                             "just above the largest converged one (" +
                               r.message + ")");
             pcout << "Outer iteration " << it << ": theta0 = " << std::fixed
-                  << std::setprecision(6) << theta * deg
-                  << " deg failed; stepping back" << std::endl;
+                  << std::setprecision(6) << theta * deg << " deg failed ("
+                  << r.message << "); stepping back" << std::endl;
             theta = below > 0 ? 0.5 * (below + theta) : 0.5 * theta;
             continue;
           }
@@ -286,7 +288,7 @@ namespace rollnip
   }
 
   ContactResult
-  solve_controlled_nip(InverseContact                  &contact,
+  solve_controlled_nip(NipSolver                       &contact,
                        const Parameters::AllParameters &parameters,
                        const double                     target)
   {

@@ -2,8 +2,10 @@
 
 #include <rollnip/boundary_ids.h>
 #include <rollnip/contact/nip_control.h>
+#include <rollnip/contact/nip_estimates.h>
 #include <rollnip/contact/nip_report.h>
 #include <rollnip/contact/nip_study.h>
+#include <rollnip/contact/two_roll_contact.h>
 #include <rollnip/geometry/angles.h>
 #include <rollnip/interrupt.h>
 #include <rollnip/material/material_table.h>
@@ -23,15 +25,6 @@ namespace rollnip
   namespace
   {
     constexpr double deg = 180. / numbers::PI;
-
-    /// 1/R = 1/R0 + 1/Rbar, the relative curvature of the two bodies.
-    double
-    effective_radius(const Parameters::AllParameters &p)
-    {
-      const double R0 = p.geometry.outer_radius;
-      const double Rb = p.contact.indenter_radius;
-      return std::isfinite(Rb) ? 1. / (1. / R0 + 1. / Rb) : R0;
-    }
 
     /// Points of the indenter outline near the nip (deformed configuration)
     /// for the plot of the deformed surface (the paper's Fig. 7).
@@ -87,19 +80,15 @@ namespace rollnip
     {
       const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
       ConditionalOStream pcout(std::cout, root);
-      const double       R = effective_radius(parameters);
-      const double       G = surface_shear_modulus(parameters.material);
-      const double       h =
-        parameters.geometry.outer_radius - parameters.geometry.inner_radius;
-      const SurfaceData data    = nonlinear.surface_data(1.);
+      const SurfaceData  data   = nonlinear.surface_data(1.);
       row.max_principal_strain  = data.extremes.max_principal_stretch - 1;
       const BondExtremes bond   = bond_extremes(data.bond);
       row.bond_sigma_rr_min     = bond.sigma_rr_min;
       row.bond_sigma_rtheta_max = bond.sigma_rtheta_max_abs;
       row.load_from_traction    = load_from_traction(data.outer);
       const double b            = row.nonlinear.half_chord;
-      row.hertz_load            = numbers::PI * b * b * 4 * G / (4 * R);
-      row.thin_layer_load       = 2 * G * std::pow(b, 5) / (15 * R * h * h * h);
+      row.hertz_load            = NipEstimates::hertz_load(parameters, b);
+      row.thin_layer_load       = NipEstimates::thin_layer_load(parameters, b);
       const double difference =
         row.load_from_traction / row.nonlinear.nip_load - 1;
       pcout << "Nip " << n << ": P from the applied pressure "
@@ -256,9 +245,10 @@ namespace rollnip
     /// empty if it did not.
     std::string
     sweep_nips(RollProblem                     &nonlinear,
+               NipSolver                       &contact,
                NipControl                      &control,
                RollProblem                     *linear,
-               InverseContact                  *linear_contact,
+               NipSolver                       *linear_contact,
                const Parameters::AllParameters &parameters,
                std::vector<NipRow>             &rows)
     {
@@ -284,8 +274,18 @@ namespace rollnip
           if (parameters.output.write_vtu)
             nonlinear.write_vtu(n + 1, 1.);
           write_nip(nonlinear, row.nonlinear, dir);
+          contact.write_results(row.nonlinear,
+                                dir,
+                                n + 1,
+                                parameters.output.write_vtu);
           if (series && row.nonlinear.converged)
-            pvd.add(sweep_time(parameters, row.nonlinear), nip + vtu);
+            {
+              pvd.add(sweep_time(parameters, row.nonlinear), nip + vtu);
+              if (parameters.mating_roll.covered)
+                pvd.add(sweep_time(parameters, row.nonlinear),
+                        nip + "/mating_roll" + vtu,
+                        1);
+            }
           if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
             write_indenter_outline(parameters,
                                    row.nonlinear,
@@ -303,11 +303,19 @@ namespace rollnip
               row.linear = linear_contact->solve(row.nonlinear.theta0);
               linear->set_output_directory(dir + "/linear");
               write_nip(*linear, row.linear, dir + "/linear", true);
+              linear_contact->write_results(row.linear,
+                                            dir + "/linear",
+                                            n + 1,
+                                            series && row.linear.converged);
               if (series && row.linear.converged)
                 {
                   linear->write_vtu(n + 1, 1.);
                   linear_pvd.add(sweep_time(parameters, row.nonlinear),
                                  nip + "/linear" + vtu);
+                  if (parameters.mating_roll.covered)
+                    linear_pvd.add(sweep_time(parameters, row.nonlinear),
+                                   nip + "/linear/mating_roll" + vtu,
+                                   1);
                 }
             }
           rows.push_back(row);
@@ -344,6 +352,15 @@ namespace rollnip
     }
   } // namespace
 
+  std::unique_ptr<NipSolver>
+  make_nip_solver(RollProblem                     &roll,
+                  const Parameters::AllParameters &parameters)
+  {
+    if (parameters.mating_roll.covered)
+      return std::make_unique<TwoRollContact>(roll, parameters);
+    return std::make_unique<InverseContact>(roll, parameters);
+  }
+
   int
   run_nip_study(const Parameters::AllParameters &parameters,
                 std::vector<NipRow>             *rows_out)
@@ -360,24 +377,25 @@ namespace rollnip
           std::make_unique<RollProblem>(parameters, MPI_COMM_WORLD);
         RollProblem &nonlinear = *nonlinear_problem;
         nonlinear.setup();
-        InverseContact contact(nonlinear, parameters);
-        NipControl     control(contact, parameters);
+        const std::unique_ptr<NipSolver> contact =
+          make_nip_solver(nonlinear, parameters);
+        NipControl control(*contact, parameters);
 
         // The linear companion: same scene, linear theory, same theta0.
         Parameters::AllParameters linear_parameters = parameters;
         linear_parameters.material.theory     = Parameters::Theory::linear;
         linear_parameters.output.print_timing = false;
-        std::unique_ptr<InverseContact> linear_contact;
+        std::unique_ptr<NipSolver> linear_contact;
         if (parameters.contact.compare_linear)
           {
             linear =
               std::make_unique<RollProblem>(linear_parameters, MPI_COMM_WORLD);
             linear->setup();
-            linear_contact =
-              std::make_unique<InverseContact>(*linear, linear_parameters);
+            linear_contact = make_nip_solver(*linear, linear_parameters);
           }
 
         failure = sweep_nips(nonlinear,
+                             *contact,
                              control,
                              linear.get(),
                              linear_contact.get(),

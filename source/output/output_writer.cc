@@ -20,6 +20,41 @@ namespace rollnip
 {
   namespace
   {
+    /// DataOut whose patches can be turned half a turn about a point: the
+    /// mating roll in the first roll's frame. A half turn negates vectors
+    /// and leaves tensors (and so every stress and strain) unchanged.
+    class PlacedDataOut : public DataOut<dim>
+    {
+    public:
+      void
+      turn_half_about(const Point<dim> &centre)
+      {
+        std::vector<unsigned int> vector_rows;
+        for (const auto &range : this->get_nonscalar_data_ranges())
+          if (std::get<3>(range) ==
+              DataComponentInterpretation::component_is_part_of_vector)
+            for (unsigned int c = std::get<0>(range); c <= std::get<1>(range);
+                 ++c)
+              vector_rows.push_back(c);
+        for (auto &patch : this->patches)
+          {
+            for (auto &v : patch.vertices)
+              v = Point<dim>(2. * centre - v);
+            for (const unsigned int c : vector_rows)
+              for (unsigned int j = 0; j < patch.data.n_cols(); ++j)
+                patch.data(c, j) = -patch.data(c, j);
+            // Coordinates of curved patches, in the last dim rows.
+            if (patch.points_are_available)
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  const unsigned int row = patch.data.n_rows() - dim + d;
+                  for (unsigned int j = 0; j < patch.data.n_cols(); ++j)
+                    patch.data(row, j) = 2 * centre[d] - patch.data(row, j);
+                }
+          }
+      }
+    };
+
     std::string
     padded(const unsigned int n, const unsigned int width)
     {
@@ -101,6 +136,12 @@ namespace rollnip
   }
 
   void
+  OutputWriter::set_placement(const std::optional<Point<dim>> &centre)
+  {
+    placement = centre;
+  }
+
+  void
   OutputWriter::write_vtu(const RollBody    &body,
                           const unsigned int step,
                           const double       load_fraction)
@@ -128,7 +169,7 @@ namespace rollnip
         }
 
     StressPostprocessor postprocessor(body.materials());
-    DataOut<dim>        data_out;
+    PlacedDataOut       data_out;
     data_out.attach_dof_handler(body.dofs());
     std::vector<DataComponentInterpretation::DataComponentInterpretation>
       interpretation(dim,
@@ -147,6 +188,8 @@ namespace rollnip
     data_out.build_patches(body.mapping(),
                            body.fe().degree,
                            DataOut<dim>::curved_inner_cells);
+    if (placement)
+      data_out.turn_half_about(*placement);
 
     const std::string base = "solution-" + padded(step, 4);
     write_atomically(directory + "/" + base + "." + padded(rank, 4) + ".vtu",

@@ -14,9 +14,11 @@ namespace rollnip
   {}
 
   void
-  SweepPvd::add(const double time, const std::string &file)
+  SweepPvd::add(const double       time,
+                const std::string &file,
+                const unsigned int part)
   {
-    records.emplace_back(time, file);
+    records.push_back({time, part, file});
     if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
       return;
     write_atomically(filename, [&](std::ostream &out) {
@@ -27,8 +29,8 @@ namespace rollnip
           << "  <Collection>\n"
           << std::setprecision(10);
       for (const auto &r : records)
-        out << "    <DataSet timestep=\"" << r.first
-            << "\" group=\"\" part=\"0\" file=\"" << r.second << "\"/>\n";
+        out << "    <DataSet timestep=\"" << r.time << "\" group=\"\" part=\""
+            << r.part << "\" file=\"" << r.file << "\"/>\n";
       out << "  </Collection>\n</VTKFile>\n";
     });
   }

@@ -34,6 +34,9 @@ for page in pages:
             print(f"FAIL: {rel}: link '{target}' names no file"); bad += 1
     for m in re.finditer(r"\.\./shared|(?<![\w.])\.\./\.\./", text):
         print(f"FAIL: {os.path.relpath(page, root)}: mentions '{m.group(0)}'"); bad += 1
+    # A merge that left its conflict markers in a page.
+    for m in re.finditer(r"^(<{7}|>{7}) ", text, re.M):
+        print(f"FAIL: {os.path.relpath(page, root)}: merge conflict marker '{m.group(1)}'"); bad += 1
 print(f"  {len(pages)} pages, {links} relative links checked")
 sys.exit(1 if bad else 0)
 PY

@@ -38,6 +38,11 @@ start_test "shipped-$name"
 # later value, so the shipped file itself is run otherwise unchanged.
 cp "$prm" "$name.prm"
 printf '\nsubsection Mesh\n  set Global refinements = %s\nend\n' "$level" >> "$name.prm"
+# A covered mating roll has a mesh of its own: the same level for it.
+if grep -q "^subsection Mating roll" "$name.prm"; then
+  printf 'subsection Mating roll\n  subsection Mesh\n    set Global refinements = %s\n  end\nend\n' \
+    "$level" >> "$name.prm"
+fi
 printf 'subsection Output\n  set Directory = output\nend\n' >> "$name.prm"
 
 rc=0

@@ -6,7 +6,8 @@
 # values equal to the nip loads of nip_characteristic.csv (so increasing),
 # files that exist, and the time's meaning in a comment. The .vtu pieces
 # carry the Cauchy stress and the Green-Lagrange strain as 9-component
-# tensors (ParaView's tensor filters need them whole).
+# tensors (ParaView's tensor filters need them whole). A two-roll sweep
+# has the mating roll as part 1 of each nip.
 #
 # Usage: bash sweep_pvd.sh ROLLNIP
 set -euo pipefail
@@ -69,3 +70,41 @@ for name in ["out/solution_sweep.pvd", "out/solution_sweep_linear.pvd"]:
 sys.exit(0 if ok else 1)
 PY
 pass "two sweep PVDs, one dataset per nip at the nip loads, tensors in the pieces"
+
+# Two covered rolls: the mating roll is part 1 of each nip, at the same time.
+cat > two.prm <<PRM
+subsection Mesh
+  set Radial cells = 4
+  set Circumferential cells = 16
+end
+subsection Contact
+  set Mode = nip angle
+  set Values = 4, 8
+  set Compare with linear theory = false
+end
+subsection Mating roll
+  set Type = covered roll
+  subsection Mesh
+    set Radial cells = 4
+    set Circumferential cells = 16
+  end
+end
+subsection Output
+  set Directory = two
+end
+PRM
+rc=0
+"$rollnip" two.prm > stdout2.txt 2> stderr2.txt || rc=$?
+[ "$rc" -eq 0 ] || { cat stderr2.txt; fail "exit code $rc"; }
+python3 - <<'PY' || fail "the two-roll sweep PVD does not hold both rolls"
+import os, sys, xml.etree.ElementTree as ET
+sets = list(ET.parse("two/solution_sweep.pvd").iter("DataSet"))
+parts = [(float(d.get("timestep")), d.get("part"), d.get("file")) for d in sets]
+ok = [p[1] for p in parts] == ["0", "1", "0", "1"] and \
+     parts[0][0] == parts[1][0] and parts[2][0] == parts[3][0] and \
+     all("mating_roll/" in p[2] for p in parts if p[1] == "1") and \
+     all(os.path.isfile(os.path.join("two", p[2])) for p in parts)
+print(f"  two/solution_sweep.pvd: {parts}")
+sys.exit(0 if ok else 1)
+PY
+pass "a two-roll sweep: the mating roll is part 1 of every nip"

@@ -6,6 +6,8 @@
 #include <rollnip/global.h>
 
 #include <memory>
+#include <utility>
+#include <vector>
 
 namespace rollnip
 {
@@ -91,6 +93,59 @@ namespace rollnip
 
   private:
     const double R0;
+  };
+
+  /**
+   * The deformed outer surface of a second roll, seen from the first. The
+   * second roll's frame has its centre at the origin and its line of
+   * centres along +y1 towards the first roll; the first roll's point x is
+   * y = (D - x1, -x2) there, with the distance of the centres
+   * D = R0 - u0 + rho(0) chosen so that the two surfaces touch on the line
+   * of centres at the first roll's indentation u0. The surface is the
+   * polygon of the second roll's deformed surface nodes, as rho(phi) in
+   * polar coordinates, linear between nodes and mirrored about the line
+   * of centres; the gap is the radial distance |y| - rho(phi).
+   */
+  class DeformedRoll : public CounterSurface
+  {
+  public:
+    /// @p outer_radius: R0 of the roll the surface is seen from;
+    /// @p radius: the undeformed outer radius of the second roll.
+    DeformedRoll(const double outer_radius, const double radius);
+
+    /// The second roll's deformed surface nodes in its frame, from its
+    /// line of centres on (the first on it).
+    void
+    set_shape(const std::vector<Point<dim>> &nodes);
+
+    double
+    gap(const Point<dim> &x, const double u0) const override;
+    Tensor<1, dim>
+    gap_gradient(const Point<dim> &x, const double u0) const override;
+    double
+    gap_derivative_u0(const Point<dim> &x, const double u0) const override;
+    double
+    radius() const override
+    {
+      return R_mate;
+    }
+
+  private:
+    /// x in the second roll's frame.
+    Point<dim>
+    mate_point(const Point<dim> &x, const double u0) const;
+
+    /// d gap / d y in the second roll's frame.
+    Tensor<1, dim>
+    gap_gradient_y(const Point<dim> &y) const;
+
+    /// rho(phi) and d rho / d phi, for phi >= 0.
+    std::pair<double, double>
+    surface_radius(const double phi) const;
+
+    const double        R0;
+    const double        R_mate;
+    std::vector<double> phi, rho;
   };
 
   /// The circle of radius @p radius, or the plane for radius = infinity.

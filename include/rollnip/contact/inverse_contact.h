@@ -2,6 +2,8 @@
 #define rollnip_contact_inverse_contact_h
 
 #include <rollnip/contact/counter_surface.h>
+#include <rollnip/contact/nip_solver.h>
+#include <rollnip/contact/surface_nodes.h>
 #include <rollnip/problem.h>
 
 #include <Eigen/Dense>
@@ -12,26 +14,6 @@
 
 namespace rollnip
 {
-  /// The checks and results of one solved nip (doc/intro.md, section 7).
-  struct ContactResult
-  {
-    bool        converged = false;
-    std::string message;
-    double      theta0        = 0; ///< [rad]
-    double      indentation   = 0; ///< u0 [mm]
-    double      nip_load      = 0; ///< P, two-sided [N/mm]
-    double      conformity    = 0; ///< max |gap| / u0 over the contact zone
-    double      penetration   = 0; ///< max(-gap, 0) / u0 outside the zone
-    double      min_pressure  = 0; ///< min f at the parameters [MPa]
-    double      peak_pressure = 0; ///< max f [MPa]
-    /// Deformed contact half-length along the surface, and the half-chord
-    /// (the x2 coordinate of the deformed edge point) [mm].
-    double              half_arc = 0, half_chord = 0;
-    unsigned int        iterations = 0;
-    std::vector<double> knots;  ///< reference angles of the pressure basis
-    std::vector<double> values; ///< f at the knots [MPa]
-  };
-
   /**
    * Batra's inverse contact iteration (doc/intro.md, section 7): for a
    * prescribed reference half nip angle theta0, find the follower pressure
@@ -44,30 +26,78 @@ namespace rollnip
    * the converged tangent, one factorisation per iteration; the small dense
    * system is solved with Eigen.
    */
-  class InverseContact
+  class InverseContact : public NipSolver
   {
   public:
+    /// Against the rigid circle or plane of Contact/Indenter radius.
     InverseContact(RollProblem                     &problem,
                    const Parameters::AllParameters &parameters);
 
-    /// The nip at the reference half nip angle @p theta0 [rad]. A nip that
-    /// does not converge leaves the state of the last converged one.
+    /// Against @p counter_surface, which its owner may reshape between
+    /// solves (the deformed surface of a mating roll).
+    InverseContact(RollProblem                          &problem,
+                   const Parameters::AllParameters      &parameters,
+                   std::shared_ptr<const CounterSurface> counter_surface);
+
     ContactResult
-    solve(const double theta0);
+    solve(const double theta0) override;
 
-    /// The largest theta0 [rad] the mesh takes: half the sector on the
-    /// nip-fitted mesh, else that of the third surface node from the end.
+    /// Half the sector on the nip-fitted mesh, else the angle of the third
+    /// surface node from the end.
     double
-    max_nip_angle();
+    max_nip_angle() override;
 
-  private:
-    struct SurfaceNode
+    /// The state, pressure and theta0 of a converged nip.
+    struct Converged
     {
-      double                  theta;
-      Point<dim>              X;
-      types::global_dof_index dof[dim];
+      TrilinosWrappers::MPI::Vector state;
+      std::function<double(double)> pressure; ///< empty: none yet
+      double                        theta0 = 0;
     };
 
+    /// The last converged nip.
+    const Converged &
+    last_converged() const
+    {
+      return converged;
+    }
+
+    /// Back to @p nip, which becomes the last converged one (an outer
+    /// iteration that failed after this one converged).
+    void
+    restore_converged(const Converged &nip);
+
+    /// The conformity tolerance of its iteration, a fraction of u0.
+    double
+    tolerance() const
+    {
+      return conformity_tolerance;
+    }
+
+    /// The pressure f(Theta) [MPa] of the current state (empty before the
+    /// first solve).
+    const std::function<double(double)> &
+    pressure() const
+    {
+      return applied_pressure;
+    }
+
+    /// The outer-surface nodes of the last solve.
+    const std::vector<SurfaceNode> &
+    surface_nodes() const
+    {
+      return nodes;
+    }
+
+    /// The displacements of the current state at surface_nodes(), as the
+    /// gap sees them (the normal part only in linear theory).
+    std::vector<Tensor<1, dim>>
+    surface_displacements() const
+    {
+      return nodal_values(problem.current_solution());
+    }
+
+  private:
     /// The contact zone of one theta0 on the surface nodes: the knots of
     /// the pressure, the nodes around the edge and the weights of the
     /// edge row of the equations.
@@ -147,11 +177,11 @@ namespace rollnip
     void
     finish(const Zone &zone, ContactResult &result);
 
-    RollProblem                          &problem;
-    const Parameters::AllParameters      &parameters;
-    const std::unique_ptr<CounterSurface> counter_surface;
-    std::vector<SurfaceNode>              nodes;
-    ConditionalOStream                    pcout;
+    RollProblem                                &problem;
+    const Parameters::AllParameters            &parameters;
+    const std::shared_ptr<const CounterSurface> counter_surface;
+    std::vector<SurfaceNode>                    nodes;
+    ConditionalOStream                          pcout;
     /// Contact/Conformity tolerance, and under load or indentation control
     /// at most a fraction of Contact/Control tolerance: the nip's P and u0
     /// carry the conformity error, and the control must see past it.
@@ -160,10 +190,8 @@ namespace rollnip
     /// first solve) and its theta0: the next solve starts from them.
     std::function<double(double)> applied_pressure;
     double                        applied_theta0 = 0;
-    /// The state, pressure and theta0 of the last converged nip.
-    TrilinosWrappers::MPI::Vector converged_state;
-    std::function<double(double)> converged_pressure;
-    double                        converged_theta0 = 0;
+    /// The last converged nip.
+    Converged converged;
   };
 
   /// contact.txt (scalars and checks) and contact_pressure.csv (f at the

@@ -31,7 +31,7 @@ namespace rollnip
   class NipControl
   {
   public:
-    NipControl(InverseContact &contact, const Parameters::AllParameters &p);
+    NipControl(NipSolver &contact, const Parameters::AllParameters &p);
 
     /// The nip for @p target: theta0 [rad] for Mode = nip angle, else P
     /// [N/mm] or u0 [mm].
@@ -113,7 +113,7 @@ namespace rollnip
     std::string
     beyond_mesh(const double theta_max) const;
 
-    InverseContact                  &contact;
+    NipSolver                       &contact;
     const Parameters::AllParameters &parameters;
     const bool                       by_load;
     std::vector<Point>               converged; ///< sorted by theta
@@ -122,7 +122,7 @@ namespace rollnip
 
   /// The nip for @p target with a NipControl of its own (no sweep).
   ContactResult
-  solve_controlled_nip(InverseContact                  &contact,
+  solve_controlled_nip(NipSolver                       &contact,
                        const Parameters::AllParameters &parameters,
                        const double                     target);
 } // namespace rollnip

@@ -5,6 +5,7 @@
 #include <rollnip/contact/nip_control.h>
 #include <rollnip/parameters.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,12 @@ namespace rollnip
   /// on the deformed outer surface (the check of the applied P).
   double
   load_from_traction(const std::vector<OuterSurfacePoint> &outer);
+
+  /// The contact solver of the scene: InverseContact against the rigid
+  /// indenter, or TwoRollContact against a covered mating roll.
+  std::unique_ptr<NipSolver>
+  make_nip_solver(RollProblem                     &roll,
+                  const Parameters::AllParameters &parameters);
 
   /**
    * Runs the contact scenes of the Contact subsection (doc/intro.md,

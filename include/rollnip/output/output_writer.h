@@ -10,6 +10,7 @@
 #include <rollnip/solvers/newton_solver.h>
 
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -47,6 +48,11 @@ namespace rollnip
     /// A new directory starts a new PVD record.
     void
     set_directory(const std::string &directory);
+
+    /// Turns the VTU half a turn about @p centre (none: as computed): the
+    /// mating roll, whose own frame has the nip on +x, in the first roll's.
+    void
+    set_placement(const std::optional<Point<dim>> &centre);
 
     /// VTU of the state of @p body: displacement, q (cellwise for Q1-P0)
     /// and a nodal average of it, the derived stresses and strains, the
@@ -86,6 +92,7 @@ namespace rollnip
     TimerOutput                                &timer;
     std::string                                 directory;
     std::vector<std::pair<double, std::string>> pvd_records;
+    std::optional<Point<dim>>                   placement;
   };
 } // namespace rollnip
 

@@ -2,7 +2,6 @@
 #define rollnip_output_sweep_pvd_h
 
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace rollnip
@@ -21,15 +20,24 @@ namespace rollnip
     /// "line load P [N/mm]".
     SweepPvd(const std::string &filename, const std::string &time_meaning);
 
-    /// Adds the dataset @p file (relative to the .pvd) at @p time and
-    /// rewrites the file whole, so that a stopped sweep keeps its nips.
+    /// Adds the dataset @p file (relative to the .pvd) at @p time as
+    /// piece @p part (0: the roll, 1: a covered mating roll) and rewrites
+    /// the file whole, so that a stopped sweep keeps its nips.
     void
-    add(const double time, const std::string &file);
+    add(const double       time,
+        const std::string &file,
+        const unsigned int part = 0);
 
   private:
-    const std::string                           filename;
-    const std::string                           time_meaning;
-    std::vector<std::pair<double, std::string>> records;
+    struct Record
+    {
+      double       time;
+      unsigned int part;
+      std::string  file;
+    };
+    const std::string   filename;
+    const std::string   time_meaning;
+    std::vector<Record> records;
   };
 } // namespace rollnip
 

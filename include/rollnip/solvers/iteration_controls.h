@@ -50,6 +50,14 @@ namespace rollnip
     constexpr double control_conformity_fraction = 0.1;
     /// A surface node within this relative distance of theta0 is the edge.
     constexpr double edge_slack = 1e-12;
+
+    // Two covered rolls (two_roll_contact.cc)
+    /// The passes end when the mating surface moves less than this many
+    /// times the contact iteration's conformity tolerance (times u0): below
+    /// it, the change is the inner iterations' own noise.
+    constexpr double two_roll_tolerance_factor = 10;
+    /// Bounds of Aitken's relaxation factor.
+    constexpr double relaxation_min = 0.05, relaxation_max = 1;
   } // namespace IterationControls
 } // namespace rollnip
 

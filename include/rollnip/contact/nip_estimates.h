@@ -1,0 +1,41 @@
+#ifndef rollnip_contact_nip_estimates_h
+#define rollnip_contact_nip_estimates_h
+
+#include <rollnip/parameters.h>
+
+namespace rollnip
+{
+  /**
+   * The closed-form nip estimates of a contact scene (doc/intro.md section
+   * 7, doc/two_rolls.md): first guesses of the contact iteration and the
+   * reference columns of the nip characteristic. The mating body is the
+   * rigid circle or plane of Contact/Indenter radius, or the covered
+   * mating roll, whose cover adds its compliance to the roll's.
+   */
+  namespace NipEstimates
+  {
+    /// R with 1/R = 1/R0 + 1/R_mate [mm] (R0 for a flat mate).
+    double
+    effective_radius(const Parameters::AllParameters &p);
+
+    /// E* of plane-strain Hertz [MPa], 1/E* = sum over the deformable
+    /// covers of 1/(4 G) (incompressible), G of the outer layer.
+    double
+    contact_modulus(const Parameters::AllParameters &p);
+
+    /// Sum over the deformable covers of h^3 / G [mm^3/MPa]: the thin
+    /// bonded incompressible layer has P = 2 b^5 / (15 R sum h^3/G).
+    double
+    thin_layer_compliance(const Parameters::AllParameters &p);
+
+    /// P of Hertz for the contact half-width @p b [N/mm].
+    double
+    hertz_load(const Parameters::AllParameters &p, const double b);
+
+    /// P of the thin layer(s) for the contact half-width @p b [N/mm].
+    double
+    thin_layer_load(const Parameters::AllParameters &p, const double b);
+  } // namespace NipEstimates
+} // namespace rollnip
+
+#endif

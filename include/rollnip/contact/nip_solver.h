@@ -1,0 +1,46 @@
+#ifndef rollnip_contact_nip_solver_h
+#define rollnip_contact_nip_solver_h
+
+#include <rollnip/contact/contact_result.h>
+
+#include <string>
+
+namespace rollnip
+{
+  /**
+   * What load and indentation control and the nip study need of a contact
+   * solver: the nip of one reference half nip angle theta0 of the roll.
+   * InverseContact solves it against a rigid counter surface,
+   * TwoRollContact against a second covered roll.
+   */
+  class NipSolver
+  {
+  public:
+    virtual ~NipSolver() = default;
+
+    /// The nip at the reference half nip angle @p theta0 [rad]. A nip that
+    /// does not converge leaves the state of the last converged one.
+    virtual ContactResult
+    solve(const double theta0) = 0;
+
+    /// The largest theta0 [rad] the roll's mesh takes.
+    virtual double
+    max_nip_angle() = 0;
+
+    /// Writes what this solver adds to the roll's results of nip @p step in
+    /// @p directory (collective); nothing for a rigid counter surface.
+    virtual void
+    write_results(const ContactResult &result,
+                  const std::string   &directory,
+                  const unsigned int   step,
+                  const bool           with_vtu)
+    {
+      (void)result;
+      (void)directory;
+      (void)step;
+      (void)with_vtu;
+    }
+  };
+} // namespace rollnip
+
+#endif

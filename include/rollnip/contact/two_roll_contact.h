@@ -1,0 +1,103 @@
+#ifndef rollnip_contact_two_roll_contact_h
+#define rollnip_contact_two_roll_contact_h
+
+#include <rollnip/contact/counter_surface.h>
+#include <rollnip/contact/inverse_contact.h>
+#include <rollnip/contact/nip_solver.h>
+#include <rollnip/problem.h>
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace rollnip
+{
+  /**
+   * The nip of two covered rolls (Mating roll/Type = covered roll,
+   * doc/two_rolls.md). Batra's inverse idea is kept for the first roll:
+   * its reference half nip angle theta0 is the control and its contact
+   * pressure the unknown. The two are coupled by an outer fixed-point
+   * iteration on the mating roll's deformed surface:
+   *  1. the first roll's contact iteration (InverseContact) makes its
+   *     surface conform, over [0, theta0], to the mating roll's deformed
+   *     surface (a DeformedRoll; at the start the current state);
+   *  2. the mating roll is loaded by the same pressure at the same
+   *     deformed points: the first roll's f at the point whose deformed
+   *     x2 (along the common tangent) is the mating node's;
+   *  3. its new deformed surface, relaxed with Aitken's factor (the first
+   *     one G_mate / (G + G_mate), exact for two half-spaces), is the
+   *     counter surface of the next pass,
+   * until the surface moves less than Contact/Conformity tolerance times
+   * the first roll's indentation. The indentation of the result is the
+   * approach of the centres, the sum of both rolls' indentations.
+   */
+  class TwoRollContact : public NipSolver
+  {
+  public:
+    TwoRollContact(RollProblem                     &roll,
+                   const Parameters::AllParameters &parameters);
+
+    ContactResult
+    solve(const double theta0) override;
+
+    double
+    max_nip_angle() override
+    {
+      return contact.max_nip_angle();
+    }
+
+    /// The mating roll's files in @p directory/mating_roll.
+    void
+    write_results(const ContactResult &result,
+                  const std::string   &directory,
+                  const unsigned int   step,
+                  const bool           with_vtu) override;
+
+    const RollProblem &
+    mating_roll() const
+    {
+      return mate;
+    }
+
+  private:
+    /// Deformed surface nodes of a roll in its own frame (reference
+    /// position plus the displacement @p u the gap sees; none if empty).
+    static std::vector<Point<dim>>
+    deformed(const std::vector<SurfaceNode>    &nodes,
+             const std::vector<Tensor<1, dim>> &u);
+
+    /// The mating roll's deformed surface nodes.
+    std::vector<Point<dim>>
+    mate_shape() const;
+
+    /// Loads the mating roll with the first roll's pressure of @p result,
+    /// mapped by the deformed coordinate x2; "" on success, else why not.
+    std::string
+    load_mate(const ContactResult &result);
+
+    /// Equilibrium of the mating roll, its indentation and the penetration
+    /// of its surface into the first roll's, in @p result.
+    void
+    measure_mate(ContactResult &result) const;
+
+    /// Back to the last converged pair of states, @p roll_nip the roll's.
+    void
+    restore(const InverseContact::Converged &roll_nip);
+
+    const Parameters::AllParameters    &parameters;
+    const Parameters::AllParameters     mate_parameters;
+    RollProblem                        &roll;
+    RollProblem                         mate;
+    const std::shared_ptr<DeformedRoll> mate_surface;
+    InverseContact                      contact;
+    std::vector<SurfaceNode>            mate_nodes;
+    /// The mating roll's pressure f(Theta_mate) of its current state.
+    std::function<double(double)> mate_pressure;
+    /// The mating roll's state and pressure of the last converged nip.
+    TrilinosWrappers::MPI::Vector mate_converged;
+    std::function<double(double)> mate_converged_pressure;
+    ConditionalOStream            pcout;
+  };
+} // namespace rollnip
+
+#endif

@@ -1,0 +1,291 @@
+#include <deal.II/base/mpi.h>
+
+#include <rollnip/contact/two_roll_contact.h>
+#include <rollnip/geometry/angles.h>
+#include <rollnip/material/material_table.h>
+#include <rollnip/solvers/iteration_controls.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+
+namespace rollnip
+{
+  namespace
+  {
+    /// y(x) on the polygon through (x_i, y_i), x increasing; constant
+    /// beyond its ends.
+    double
+    piecewise_linear(const std::vector<double> &x,
+                     const std::vector<double> &y,
+                     const double               at)
+    {
+      if (at <= x.front())
+        return y.front();
+      if (at >= x.back())
+        return y.back();
+      const std::size_t j =
+        std::upper_bound(x.begin(), x.end(), at) - x.begin();
+      const double w = (at - x[j - 1]) / (x[j] - x[j - 1]);
+      return (1 - w) * y[j - 1] + w * y[j];
+    }
+
+    /// The reference angle of the mating roll whose contact edge lies at
+    /// the same distance from the line of centres as the roll's at theta0.
+    double
+    mate_nip_angle(const Parameters::AllParameters &p, const double theta0)
+    {
+      const double R0 = p.geometry.outer_radius;
+      const double Rm = p.mating_roll.geometry.outer_radius;
+      return std::asin(std::min(0.95, R0 * std::sin(theta0) / Rm));
+    }
+  } // namespace
+
+  TwoRollContact::TwoRollContact(RollProblem                     &roll,
+                                 const Parameters::AllParameters &parameters)
+      : parameters(parameters)
+      , mate_parameters(parameters.mating_roll_parameters())
+      , roll(roll)
+      , mate(mate_parameters, MPI_COMM_WORLD)
+      , mate_surface(std::make_shared<DeformedRoll>(
+          parameters.geometry.outer_radius,
+          parameters.mating_roll.geometry.outer_radius))
+      , contact(roll, parameters, mate_surface)
+      , pcout(std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+  {
+    mate.setup();
+    mate.set_step_log(false);
+  }
+
+  std::vector<Point<dim>>
+  TwoRollContact::deformed(const std::vector<SurfaceNode>    &nodes,
+                           const std::vector<Tensor<1, dim>> &u)
+  {
+    std::vector<Point<dim>> x;
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      x.push_back(u.empty() ? nodes[i].X : nodes[i].X + u[i]);
+    return x;
+  }
+
+  std::vector<Point<dim>>
+  TwoRollContact::mate_shape() const
+  {
+    auto u =
+      surface_values(mate_nodes, mate.current_solution(), mate.locally_owned());
+    // As for the first roll (InverseContact): linear theory moves the
+    // surface along its reference normal only.
+    if (parameters.material.theory == Parameters::Theory::linear)
+      for (unsigned int i = 0; i < u.size(); ++i)
+        {
+          const Tensor<1, dim> n = mate_nodes[i].X / mate_nodes[i].X.norm();
+          u[i]                   = (u[i] * n) * n;
+        }
+    return deformed(mate_nodes, u);
+  }
+
+  std::string
+  TwoRollContact::load_mate(const ContactResult &result)
+  {
+    // The roll's pressure as a function of x2 along the common tangent
+    // (increasing near the nip, where the pressure is): of the deformed
+    // surfaces, where the two coincide; in linear theory, which loads the
+    // reference surfaces, of those, so that both carry the same P.
+    const bool linear =
+      parameters.material.theory == Parameters::Theory::linear;
+    const auto         &nodes = contact.surface_nodes();
+    const auto          x     = linear ? deformed(nodes, {})
+                                       : deformed(nodes, contact.surface_displacements());
+    std::vector<double> x2, theta;
+    for (unsigned int i = 0; i < x.size(); ++i)
+      if (x2.empty() || x[i][1] > x2.back())
+        {
+          x2.push_back(x[i][1]);
+          theta.push_back(nodes[i].theta);
+        }
+    // The mating nodes' x2 as a function of their reference angle.
+    const auto          y = linear ? deformed(mate_nodes, {}) : mate_shape();
+    std::vector<double> mate_theta, mate_x2;
+    for (unsigned int j = 0; j < y.size(); ++j)
+      {
+        mate_theta.push_back(mate_nodes[j].theta);
+        mate_x2.push_back(std::abs(y[j][1]));
+      }
+    const std::function<double(double)> f = contact.pressure();
+    const double                        edge =
+      linear ? parameters.geometry.outer_radius * std::sin(result.theta0)
+                                    : result.half_chord;
+    const std::function<double(double)> to = [=](const double theta_mate) {
+      const double at = piecewise_linear(mate_theta, mate_x2, theta_mate);
+      return at >= edge ? 0. : f(piecewise_linear(x2, theta, at));
+    };
+    const std::function<double(double)> from = mate_pressure;
+    mate.set_pressure([from, to](const double theta, const double lambda) {
+      const double f0 = from ? from(theta) : 0.;
+      return f0 + lambda * (to(theta) - f0);
+    });
+    RunStatus status = mate_pressure ? mate.run(true, 1.) : mate.run(false);
+    if (!status.converged)
+      return "the mating roll cannot carry the contact pressure (" +
+             status.message + ")";
+    mate_pressure = to;
+    mate.set_pressure([to](const double theta, const double lambda) {
+      return lambda * to(theta);
+    });
+    return "";
+  }
+
+  void
+  TwoRollContact::measure_mate(ContactResult &result) const
+  {
+    const auto y            = mate_shape();
+    result.two_rolls        = true;
+    result.roll_indentation = result.indentation;
+    result.mate_indentation = mate_parameters.geometry.outer_radius - y[0][0];
+    result.indentation      = result.roll_indentation + result.mate_indentation;
+    result.mate_nip_load    = -2. * mate.load_resultant(1.)[0];
+    // The first roll's deformed surface seen from the mating roll: its
+    // nodes outside the zone must not lie inside it.
+    DeformedRoll roll_surface(mate_parameters.geometry.outer_radius,
+                              parameters.geometry.outer_radius);
+    roll_surface.set_shape(
+      deformed(contact.surface_nodes(), contact.surface_displacements()));
+    double min_gap = 0;
+    for (const auto &p : y)
+      if (std::abs(p[1]) > result.half_chord)
+        min_gap =
+          std::min(min_gap, roll_surface.gap(p, result.mate_indentation));
+    result.mate_penetration = std::max(0., -min_gap) / result.indentation;
+  }
+
+  void
+  TwoRollContact::restore(const InverseContact::Converged &roll_nip)
+  {
+    contact.restore_converged(roll_nip);
+    if (mate_converged_pressure)
+      mate.set_solution(mate_converged);
+    else
+      {
+        TrilinosWrappers::MPI::Vector zero(mate.body().owned_solution());
+        zero = 0;
+        mate.set_solution(zero);
+      }
+    mate_pressure = mate_converged_pressure;
+    const auto f  = mate_pressure;
+    mate.set_pressure([f](const double theta, const double lambda) {
+      return f ? lambda * f(theta) : 0.;
+    });
+  }
+
+  ContactResult
+  TwoRollContact::solve(const double theta0)
+  {
+    if (mate.has_nip_fitted_mesh())
+      mate.fit_mesh_to_nip(mate_nip_angle(parameters, theta0));
+    mate_nodes = outer_surface_nodes(mate.dofs());
+    // The passes converge the roll's contact many times: a failed nip goes
+    // back to this one.
+    const InverseContact::Converged last = contact.last_converged();
+    // Two half-spaces: the exact relaxation is G_mate / (G + G_mate).
+    const double G     = surface_shear_modulus(parameters.material);
+    const double G_m   = surface_shear_modulus(mate_parameters.material);
+    double       omega = G_m / (G + G_m);
+    const double tolerance =
+      IterationControls::two_roll_tolerance_factor * contact.tolerance();
+
+    std::vector<Point<dim>>     shape = mate_shape();
+    std::vector<Tensor<1, dim>> previous_change;
+    ContactResult               result;
+    pcout << "Two-roll contact, theta0 = " << theta0 * degrees_per_radian
+          << " deg" << std::endl;
+    for (unsigned int k = 1; k <= parameters.mating_roll.max_iterations; ++k)
+      {
+        mate_surface->set_shape(shape);
+        result                  = contact.solve(theta0);
+        result.outer_iterations = k;
+        if (result.converged)
+          result.message = load_mate(result);
+        if (!result.message.empty())
+          {
+            result.converged = false;
+            result.message =
+              "two rolls, pass " + std::to_string(k) + ": " + result.message;
+            break;
+          }
+        // How far the mating surface moved under the new pressure.
+        const auto                  new_shape = mate_shape();
+        std::vector<Tensor<1, dim>> change(shape.size());
+        double                      largest = 0;
+        for (unsigned int j = 0; j < shape.size(); ++j)
+          {
+            change[j] = new_shape[j] - shape[j];
+            largest   = std::max(largest, change[j].norm());
+          }
+        const double moved = largest / result.indentation;
+        measure_mate(result);
+        pcout << "  pass " << k << ": mating surface moved " << std::scientific
+              << std::setprecision(3) << moved << " u0, relaxation "
+              << std::fixed << omega << ", approach " << std::setprecision(6)
+              << result.indentation << " mm, P " << result.nip_load
+              << " N/mm (mating roll " << result.mate_nip_load << ")"
+              << std::endl;
+        if (moved < tolerance)
+          {
+            result.converged = true;
+            break;
+          }
+        result.converged = false;
+        // Aitken's update of the relaxation from the last two changes.
+        if (!previous_change.empty())
+          {
+            double num = 0, den = 0;
+            for (unsigned int j = 0; j < change.size(); ++j)
+              {
+                const Tensor<1, dim> d = change[j] - previous_change[j];
+                num += previous_change[j] * d;
+                den += d * d;
+              }
+            if (den > 0)
+              omega = std::clamp(-omega * num / den,
+                                 IterationControls::relaxation_min,
+                                 IterationControls::relaxation_max);
+          }
+        for (unsigned int j = 0; j < shape.size(); ++j)
+          shape[j] += omega * change[j];
+        previous_change = change;
+        result.message  = "the two rolls did not agree on the mating "
+                          "surface in " +
+                         std::to_string(k) + " passes (it still moves " +
+                         std::to_string(moved) + " u0)";
+      }
+    if (result.converged)
+      {
+        result.message          = "";
+        mate_converged          = mate.body().owned_solution();
+        mate_converged_pressure = mate_pressure;
+      }
+    else
+      restore(last);
+    return result;
+  }
+
+  void
+  TwoRollContact::write_results(const ContactResult &result,
+                                const std::string   &directory,
+                                const unsigned int   step,
+                                const bool           with_vtu)
+  {
+    mate.set_output_directory(directory + "/mating_roll");
+    // In the first roll's frame: its centre at the distance D of the
+    // centres, half a turn about D/2 on the line of centres.
+    const double D = parameters.geometry.outer_radius +
+                     mate_parameters.geometry.outer_radius - result.indentation;
+    mate.set_vtu_placement(Point<dim>(D / 2, 0.));
+    if (with_vtu)
+      mate.write_vtu(step, 1.);
+    RunStatus status;
+    status.converged     = result.converged;
+    status.load_fraction = 1.;
+    status.message       = "contact: " + result.message;
+    mate.write_results(status);
+  }
+} // namespace rollnip
