@@ -105,7 +105,8 @@ CHEAP = [("Mesh", "Global refinements", "0"), ("Output", "Directory", "out"),
 NOISE = ["An error occurred", "Stacktrace", "Amesos", "MUMPS", "MPI_ABORT",
          "terminate called"]
 # Keys with a unit, for the units-* mutations.
-RADII = {"Inner radius", "Outer radius", "Indenter radius"}
+RADII = {"Inner radius", "Outer radius", "Indenter radius",
+         "Roll diameter", "Cover thickness", "Indenter diameter"}
 DIMENSIONAL = RADII | {"C1", "C2", "p0", "Values"}
 ANGLES = {"Sector angle", "theta0"}
 TEXT = ["abc", "", "1,5", "12 mm", "1.2.3", "0x1A", "true", "--5", "1e", "\u221e"]
@@ -283,7 +284,8 @@ def quad_mesh(r1, r0, sector_deg, nr=3, nt=16, triangles=False):
 
 
 def make_case(rng, kind, base_lines, entries):
-    """(prm text, description, {file name: content}) of one mutated case."""
+    """(prm text, description, {file name: content}) of one mutated case, or
+    None when the base file has no entry the kind can mutate."""
     lines = list(base_lines)
     for sub, key, value in CHEAP:
         put(lines, sub, key, value)
@@ -301,6 +303,8 @@ def make_case(rng, kind, base_lines, entries):
                     and {"units-x2": e[2] in RADII,
                          "units-rad-for-deg": e[2] in ANGLES or (e[2] == "Values" and nip_angle)
                          }.get(kind, e[2] in DIMENSIONAL)]
+        if not pool:
+            return None  # no entry of this kind in this file: the caller picks another
         for _ in range(50):
             i, sub, key, value = rng.choice(pool)
             if kind == "value-text":
@@ -499,8 +503,11 @@ def main():
         kinds += rng.sample(KINDS, len(KINDS))
     records, start = [], time.time()
     for n, kind in enumerate(kinds[:args.n], 1):
-        base = rng.choice(sorted(bases))
-        text, what, files = make_case(rng, kind, bases[base], entries)
+        case = None
+        while case is None:
+            base = rng.choice(sorted(bases))
+            case = make_case(rng, kind, bases[base], entries)
+        text, what, files = case
         case_dir = os.path.join(work, f"case-{n:03d}")
         os.makedirs(case_dir)
         open(os.path.join(case_dir, "case.prm"), "w").write(text)

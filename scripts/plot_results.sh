@@ -12,18 +12,20 @@
 # A nip's linear-theory tables (OUTPUT_DIR/.../linear/) are drawn when present.
 #
 # Figures (NAME.png and NAME.svg):
-#   contact_pressure             f(theta), knots marked, nonlinear and linear (paper Fig. 5)
-#   contact_pressure_normalised  the same, f / peak f against theta / theta0
+#   contact_pressure             f(theta), knots marked, nonlinear and linear
+#   contact_pressure_normalised  the same, f / peak f against x2 / b (deformed nip
+#                                coordinate over half-chord) with the Hertz shape;
+#                                prints each curve's largest departure from it
 #   contact_pressure_over_E      f / E against theta, only if ROLLNIP_E_MPA is set
 #   nip_pressure                 imposed f and the normal traction from the stress
 #                                against the deformed nip coordinate x2
-#   bond_stresses                sigma_rr and sigma_rtheta on the bond surface (Fig. 3, 6)
+#   bond_stresses                sigma_rr and sigma_rtheta on the bond surface, nonlinear and linear
 #   bond_stress_decay            |sigma_rr| and |sigma_rtheta| on the bond surface over
 #                                their peaks, logarithmic (the truncation check)
 #   deformed_surface[_nip-NN]    deformed and undeformed outer surface with the
-#                                indenter, near the nip, equal scales (Fig. 7)
-#   nip_characteristic           P against the half-chord b: nonlinear, linear, Hertz,
-#                                thin layer, log-log
+#                                indenter, near the nip, equal scales
+#   nip_characteristic           P against the half-chord b: nonlinear, linear (at its
+#                                own b), Hertz, thin layer, log-log
 #   nip_report                   nip width 2b and peak and mean pressure against the
 #                                line load in the run's unit, linear axes (nip_report.csv)
 # A figure whose tables are missing (e.g. no contact) is skipped with a note.
@@ -228,7 +230,6 @@ for i in "${!nips[@]}"; do
     continue
   fi
   c="$(colour "$i")"
-  t0="${theta0s[$i]:-$(awk -F, 'END { print $1 }' "$d/contact_pressure.csv")}"
   for theory in nonlinear linear; do
     if [ "$theory" = nonlinear ]; then
       src="$d"
@@ -246,12 +247,20 @@ for i in "${!nips[@]}"; do
     dense_pressure "$src/contact_pressure.csv" "$src/outer_surface.csv" "$df"
     if [ "$theory" = nonlinear ]; then dense[i]="$df"; else have_linear=1; fi
     pk="$(column_max "$src/contact_pressure.csv" 2)"
+    # b: the deformed half-chord, x2 at theta0 (the last sample).
+    b="$(awk -F, 'END { print $2 }' "$df")"
     dq="$(gq "$df")"
     kq="$(gq "$src/contact_pressure.csv")"
     title="title '$theory, ${labels[$i]}'"
     curves+=("$dq skip 1 using 1:3 with $style lc rgb '$c' $title"
       "$kq skip 1 using 1:2 with $knots lc rgb '$c' notitle")
-    curves_n+=("$dq skip 1 using (column(1)/$t0):(column(3)/$pk) with $style lc rgb '$c' $title")
+    curves_n+=("$dq skip 1 using (column(2)/$b):(column(3)/$pk) with $style lc rgb '$c' $title")
+    # The largest departure of f/f_peak from the Hertz shape sqrt(1 - (x2/b)^2).
+    awk -F, -v b="$b" -v pk="$pk" -v name="$theory, ${names[$i]}" '
+      NR > 1 { s = $2 / b; d = $3 / pk - sqrt(s < 1 ? 1 - s * s : 0)
+               if (d < lo) { lo = d; at_lo = s }; if (d > hi) { hi = d; at_hi = s } }
+      END { printf "plot_results: %s: f/f_peak - sqrt(1 - (x2/b)^2) from %+.1f %% (x2/b = %.2f) to %+.1f %% (x2/b = %.2f) of the peak; b = %.4f mm\n",
+                   name, 100 * lo, at_lo, 100 * hi, at_hi, b }' "$df"
     if [ -n "${ROLLNIP_E_MPA:-}" ]; then
       curves_e+=("$dq skip 1 using 1:(column(3)/$ROLLNIP_E_MPA) with $style lc rgb '$c' $title"
         "$kq skip 1 using 1:(column(2)/$ROLLNIP_E_MPA) with $knots lc rgb '$c' notitle")
@@ -272,8 +281,8 @@ set yrange [0:*]
 plot $(join ", " "${curves[@]}")
 EOF
   render contact_pressure_normalised 900 620 <<EOF
-set title 'Contact pressure profiles, each divided by its own peak'
-set xlabel 'θ / θ_0 (reference angle over half nip angle, dimensionless)'
+set title 'Contact pressure over its peak against the deformed nip coordinate, and Hertz'
+set xlabel 'x_2 / b (deformed nip coordinate over deformed half-chord, dimensionless)'
 set ylabel 'f / f_{peak} (dimensionless)'
 set grid
 set key bottom left box opaque
@@ -281,7 +290,7 @@ set xrange [0:1]
 set yrange [0:1.05]
 set samples 400
 plot $(join ", " "${curves_n[@]}"), \\
-     sqrt(1 - x**2) with lines lw 1 lc rgb '#000000' title 'Hertz shape √(1 - (θ/θ_0)^2)'
+     sqrt(1 - x**2) with lines lw 1 lc rgb '#000000' title 'Hertz shape √(1 - (x_2/b)^2)'
 EOF
   if [ "${#curves_e[@]}" -gt 0 ]; then
     render contact_pressure_over_E 900 620 <<EOF
@@ -466,7 +475,22 @@ if [ -f "$characteristic" ] && [ "$n_rows" -ge 1 ]; then
       [ -n "$1" ] && awk -F, -v c="$1" 'NR > 1 && $c + 0 > 0 { found = 1 } END { exit !found }' "$characteristic"
     }
     curves=("$fq skip 1 using $cb:$cp with $style lw 2 pt 7 ps 1.2 lc rgb '#1f77b4' title 'nonlinear (this program)'")
-    positive "$cl" && curves+=("$fq skip 1 using $cb:$cl with $style lw 2 dt 2 pt 5 ps 1.1 lc rgb '#d62728' title 'linear theory (this program, same θ_0)'")
+    if positive "$cl"; then
+      # The linear theory at its own half-chord: x2 at theta0 on its deformed
+      # surface, the last sample of its dense f (section a).
+      linb="$tmp/linear_characteristic.csv"
+      echo "half_chord_mm,P_linear_N_per_mm" >"$linb"
+      for i in "${!nips[@]}"; do
+        [ -f "$tmp/f_${i}_linear.csv" ] || continue
+        b="$(awk -F, 'END { print $2 }' "$tmp/f_${i}_linear.csv")"
+        awk -F, -v r=$((i + 2)) -v c="$cl" -v b="$b" 'NR == r { print b "," $c }' "$characteristic" >>"$linb"
+      done
+      if [ "$(grep -c . "$linb")" -gt 1 ]; then
+        curves+=("$(gq "$linb") skip 1 using 1:2 with $style lw 2 dt 2 pt 5 ps 1.1 lc rgb '#d62728' title 'linear theory (this program, same θ_0, its own b)'")
+      else
+        curves+=("$fq skip 1 using $cb:$cl with $style lw 2 dt 2 pt 5 ps 1.1 lc rgb '#d62728' title 'linear theory (this program, same θ_0, at the nonlinear b)'")
+      fi
+    fi
     positive "$ch" && curves+=("$fq skip 1 using $cb:$ch with $style lw 1.5 dt 4 pt 9 ps 1.2 lc rgb '#2ca02c' title 'Hertz, incompressible half-space'")
     positive "$ct" && curves+=("$fq skip 1 using $cb:$ct with $style lw 1.5 dt 5 pt 11 ps 1.2 lc rgb '#9467bd' title 'thin bonded layer asymptote'")
     xr="$(awk -F, -v c="$cb" 'NR > 1 { if (lo == "" || $c < lo) lo = $c; if ($c > hi) hi = $c }

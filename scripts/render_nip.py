@@ -5,7 +5,7 @@ ParaView when ROLLNIP_WITH_PARAVIEW=1 is set); without a display, under
 xvfb-run:
 
   xvfb-run -a pvpython scripts/render_nip.py output/batra1980/nip-03 \
-      --field sigma_rr --output nip.png
+      --field sigma_rr --output nip.png [--edges] [--zoom 0]
 
 NIP_DIR is a directory with solution.pvd (and indenter.csv for contact
 runs). The last time of the PVD (the converged nip) is drawn.
@@ -31,7 +31,21 @@ def parse_arguments():
                    help="half-height of the picture in nip half-widths "
                         "(default 3; 0: the whole model)")
     p.add_argument("--size", default="1200x800", help="pixels, WxH")
+    p.add_argument("--edges", action="store_true",
+                   help="draw the cell edges (the mesh) over the colours")
     return p.parse_args()
+
+
+def unit_of(field):
+    """The unit of a VTU array, for the colour bar."""
+    if field.startswith(("sigma_", "cauchy_stress", "pressure_unknown_q")) or \
+            field in ("von_mises", "hydrostatic_pressure"):
+        return "MPa"
+    if field == "displacement":
+        return "mm"
+    if field in ("material_id", "subdomain"):
+        return "index"
+    return "dimensionless"
 
 
 def read_outline(path):
@@ -80,8 +94,11 @@ def main():
     pv.ColorBy(shown, ("POINTS", args.field))
     shown.RescaleTransferFunctionToDataRange(True, False)
     shown.SetScalarBarVisibility(view, True)
+    if args.edges:
+        shown.SetRepresentationType("Surface With Edges")
+        shown.EdgeColor = [0.25, 0.25, 0.25]
     bar = pv.GetScalarBar(pv.GetColorTransferFunction(args.field), view)
-    bar.Title = args.field
+    bar.Title = f"{args.field} ({unit_of(args.field)})"
     bar.TitleColor = bar.LabelColor = [0, 0, 0]
 
     outline_file = os.path.join(args.nip_dir, "indenter.csv")

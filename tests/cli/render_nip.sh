@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # scripts/render_nip.py draws a nip with ParaView: run a small contact nip,
-# render it coloured by sigma_rr and by an unknown field, and check that the
+# render it coloured by sigma_rr, the whole model with its cell edges
+# (--edges --zoom 0), and by an unknown field, and check that the
 # PNG is written (a real image of the requested size) and that a missing
 # array is refused with a one-line message. Skipped (exit 77) where
 # pvpython is not installed (ROLLNIP_WITH_PARAVIEW=1 bash scripts/setup.sh
@@ -60,6 +61,12 @@ pass "a nip at theta0 = 8 deg ran"
 size="$(python3 -c "import struct; d=open('nip.png','rb').read(24); print(*struct.unpack('>II', d[16:24]))")"
 [ "$size" = "800 600" ] || fail "nip.png is $size pixels, not 800 600"
 pass "nip.png written, 800 x 600 pixels"
+
+"${pv[@]}" "$script" out --field von_mises --zoom 0 --edges --output mesh.png --size 640x480 > edges.txt 2>&1 ||
+  { cat edges.txt; fail "render_nip.py --edges --zoom 0 failed"; }
+size="$(python3 -c "import struct; d=open('mesh.png','rb').read(24); print(*struct.unpack('>II', d[16:24]))")"
+[ "$size" = "640 480" ] || fail "mesh.png is $size pixels, not 640 480"
+pass "--edges --zoom 0 (the whole mesh) writes mesh.png, 640 x 480 pixels"
 
 rc=0
 "${pv[@]}" "$script" out --field no_such_field --output x.png > bad.txt 2>&1 || rc=$?
