@@ -18,26 +18,39 @@ if ! command -v pvpython >/dev/null 2>&1; then
   echo "skipped: pvpython (ParaView) is not installed; ROLLNIP_WITH_PARAVIEW=1 bash scripts/setup.sh installs it"
   exit 77
 fi
+require_executable rollnip "$rollnip"
+start_test render_nip
+
 # ParaView needs an X display that opens. CI machines may set DISPLAY=:99
-# with no server behind it, or run an Xvfb that cannot be reached; a machine
-# where neither DISPLAY nor xvfb-run gives one cannot render, which is a skip,
-# not a failure of render_nip.py.
+# with no server behind it. Without a working DISPLAY the test starts an
+# Xvfb of its own on a free display number and waits until it accepts a
+# connection (under xvfb-run -a, pvpython at times found no server yet and
+# aborted). A machine where neither gives a display cannot render, which
+# is a skip, not a failure of render_nip.py.
 probe='import ctypes, sys
 x = ctypes.CDLL("libX11.so.6")
 x.XOpenDisplay.restype = ctypes.c_void_p
 sys.exit(0 if x.XOpenDisplay(None) else 1)'
-xvfb=(xvfb-run -a -s "-screen 0 1280x1024x24")
-if [ -n "${DISPLAY:-}" ] && python3 -c "$probe" 2>/dev/null; then
-  pv=(pvpython)
-elif command -v xvfb-run >/dev/null 2>&1 &&
-  "${xvfb[@]}" python3 -c "$probe" 2>/dev/null; then
-  pv=("${xvfb[@]}" pvpython)
-else
-  echo "skipped: no X display opens (DISPLAY='${DISPLAY:-}', xvfb-run $(command -v xvfb-run >/dev/null && echo "gave none" || echo "not installed")); ROLLNIP_WITH_PARAVIEW=1 bash scripts/setup.sh installs xvfb"
-  exit 77
+display_opens() { python3 -c "$probe" 2>/dev/null; }
+if [ -z "${DISPLAY:-}" ] || ! display_opens; then
+  command -v Xvfb >/dev/null 2>&1 || {
+    echo "skipped: no X display opens (DISPLAY='${DISPLAY:-}') and Xvfb is not installed; ROLLNIP_WITH_PARAVIEW=1 bash scripts/setup.sh installs it"
+    exit 77
+  }
+  n=140
+  while [ -e "/tmp/.X$n-lock" ] || [ -e "/tmp/.X11-unix/X$n" ]; do n=$((n + 1)); done
+  Xvfb ":$n" -screen 0 1280x1024x24 -nolisten tcp > xvfb.log 2>&1 &
+  xvfb_pid=$!
+  trap 'status=$?; kill "$xvfb_pid" 2>/dev/null; wait "$xvfb_pid" 2>/dev/null; (exit $status); finish_test' EXIT
+  export DISPLAY=":$n"
+  for _ in $(seq 100); do display_opens && break; sleep 0.1; done
+  display_opens || {
+    echo "skipped: the Xvfb started on $DISPLAY accepts no connection:"
+    cat xvfb.log
+    exit 77
+  }
 fi
-require_executable rollnip "$rollnip"
-start_test render_nip
+pv=(pvpython)
 
 cat > nip.prm <<PRM
 subsection Mesh
