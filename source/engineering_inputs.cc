@@ -171,8 +171,6 @@ namespace rollnip
                   ExcMessage("Material/Hardness describes a one-layer cover: "
                              "with Layer thicknesses give C1 and C2 per "
                              "layer"));
-      material.C1                   = c.C1;
-      material.C2                   = c.C2;
       material.layer_C1             = {c.C1};
       material.layer_C2             = {c.C2};
       material.hardness_modulus     = E;
@@ -263,8 +261,9 @@ namespace rollnip
         s << "Material: " << p.material.hardness_description
           << ": E = " << p.material.hardness_modulus
           << " MPa (an estimate from hardness), G = E/3 = "
-          << p.material.hardness_modulus / 3 << " MPa, C1 = " << p.material.C1
-          << " MPa, C2 = " << p.material.C2 << " MPa\n";
+          << p.material.hardness_modulus / 3
+          << " MPa, C1 = " << p.material.layer_C1.back()
+          << " MPa, C2 = " << p.material.layer_C2.back() << " MPa\n";
       const auto &c = p.contact;
       if (c.mode == Parameters::ContactMode::load && c.load_unit.name != "N/mm")
         {

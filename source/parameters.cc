@@ -300,9 +300,6 @@ namespace rollnip
       layer_C1          = numbers("C1");
       layer_C2          = numbers("C2");
       layer_thicknesses = numbers("Layer thicknesses");
-      C1                = layer_C1.back();
-      C2 =
-        layer_C2.size() == layer_C1.size() ? layer_C2.back() : layer_C2.front();
       theory =
         prm.get("Theory") == "linear" ? Theory::linear : Theory::nonlinear;
       EngineeringInputs::parse_material(prm, *this);

@@ -99,8 +99,6 @@ namespace rollnip
       std::vector<double> layer_C1, layer_C2;
       /// Thickness of every layer [mm]; empty: one layer, the whole cover.
       std::vector<double> layer_thicknesses;
-      double              C1; ///< of the outer layer [MPa]
-      double              C2; ///< of the outer layer [MPa]
       Theory              theory;
 
       unsigned int

@@ -3,8 +3,8 @@
 namespace rollnip
 {
   MooneyRivlin::MooneyRivlin(const Parameters::Material &material)
-      : MooneyRivlin(material.C1,
-                     material.C2,
+      : MooneyRivlin(material.layer_C1.back(),
+                     material.layer_C2.back(),
                      material.theory == Parameters::Theory::linear)
   {}
 

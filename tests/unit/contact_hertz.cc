@@ -37,7 +37,8 @@ main(int argc, char **argv)
   RollProblem problem(parameters, MPI_COMM_WORLD);
   problem.setup();
   InverseContact      contact(problem, parameters);
-  const double        G = 2 * (parameters.material.C1 + parameters.material.C2);
+  const double        G = 2 * (parameters.material.layer_C1.back() +
+                        parameters.material.layer_C2.back());
   const double        R = 1. / (1. / 60.7 + 1. / 76.2);
   std::vector<double> peak_error, load_error;
   for (const double theta0_deg : {8., 6., 4., 2.})

@@ -49,10 +49,11 @@ main(int argc, char **argv)
       const ContactResult r = contact.solve(theta0);
       if (!r.converged)
         std::cout << "  " << r.message << std::endl;
-      const double G = 2 * (parameters.material.C1 + parameters.material.C2);
-      const double P_thin  = 2 * G * std::pow(a, 5) / (15 * R * h * h * h);
-      const double u0_thin = a * a / (6 * R);
-      const std::string at = "a/h = " + testing::num(a / h) + ": ";
+      const double      G       = 2 * (parameters.material.layer_C1.back() +
+                            parameters.material.layer_C2.back());
+      const double      P_thin  = 2 * G * std::pow(a, 5) / (15 * R * h * h * h);
+      const double      u0_thin = a * a / (6 * R);
+      const std::string at      = "a/h = " + testing::num(a / h) + ": ";
       checker.check(r.converged && r.conformity < 1e-6,
                     at + "converged, conformity " + testing::num(r.conformity));
       excess.push_back(r.nip_load / P_thin - 1);

@@ -159,9 +159,10 @@ namespace
     roll.setup();
     TwoRollContact contact(roll, p);
     // 1/E* = 1/(4 G) + 1/(4 G_mate), G = 2 (C1 + C2).
-    const double G = 2 * (p.material.C1 + p.material.C2);
-    const double G_mate =
-      2 * (p.mating_roll.material.C1 + p.mating_roll.material.C2);
+    const double G =
+      2 * (p.material.layer_C1.back() + p.material.layer_C2.back());
+    const double        G_mate = 2 * (p.mating_roll.material.layer_C1.back() +
+                               p.mating_roll.material.layer_C2.back());
     const double        E_star = 1 / (1 / (4 * G) + 1 / (4 * G_mate));
     const double        R      = 1 / (1 / 60.7 + 1 / 76.2);
     std::vector<double> peak_error, load_error;

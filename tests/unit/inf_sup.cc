@@ -219,7 +219,8 @@ namespace
     const Eigen::MatrixXd S = schur_complement(problem.tangent(), blocks);
     const Eigen::MatrixXd M = pressure_mass_matrix(dof_handler, blocks);
     Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eigen(S, M);
-    const double G     = 2. * (parameters.material.C1 + parameters.material.C2);
+    const double G     = 2. * (parameters.material.layer_C1.back() +
+                           parameters.material.layer_C2.back());
     const double beta2 = G * eigen.eigenvalues().minCoeff();
     if (checkerboard && element == "Q1-P0")
       {

@@ -57,7 +57,7 @@ namespace rollnip
   inline double
   surface_shear_modulus(const Parameters::Material &material)
   {
-    return MaterialTable(material).surface_layer().shear_modulus();
+    return MooneyRivlin(material).shear_modulus();
   }
 } // namespace rollnip
 

@@ -29,6 +29,8 @@ namespace rollnip
   class MooneyRivlin
   {
   public:
+    /// The law of the outer layer of @p material (the whole cover for one
+    /// layer; MaterialTable holds every layer's).
     explicit MooneyRivlin(const Parameters::Material &material);
 
     /// The law with constants @p C1, @p C2 [MPa], in linear theory if
