@@ -4,6 +4,7 @@
 #include <deal.II/base/timer.h>
 
 #include <rollnip/body/roll_body.h>
+#include <rollnip/contact/contact_body.h>
 #include <rollnip/global.h>
 #include <rollnip/output/output_writer.h>
 #include <rollnip/parameters.h>
@@ -24,7 +25,7 @@ namespace rollnip
    * the studies) hold one of these per run; everything it does is done by
    * its parts.
    */
-  class RollProblem
+  class RollProblem : public ContactBody
   {
   public:
     RollProblem(const Parameters::AllParameters &parameters,
@@ -46,21 +47,21 @@ namespace rollnip
     }
 
     bool
-    has_nip_fitted_mesh() const
+    has_nip_fitted_mesh() const override
     {
       return roll_body.has_nip_fitted_mesh();
     }
     /// Moves the nip-fitted mesh so that the contact edge is the surface
     /// vertex at @p theta0 [rad].
     void
-    fit_mesh_to_nip(const double theta0);
+    fit_mesh_to_nip(const double theta0) override;
     double
-    max_nip_angle() const
+    max_nip_angle() const override
     {
       return roll_body.max_nip_angle();
     }
     MeshQuality
-    cell_quality() const
+    cell_quality() const override
     {
       return roll_body.cell_quality();
     }
@@ -71,18 +72,19 @@ namespace rollnip
     /// @p first_increment if positive, else 1 / (Initial steps).
     RunStatus
     run(const bool   from_current_state = false,
-        const double first_increment    = 0);
+        const double first_increment    = 0) override;
 
     /// Replaces the follower pressure by @p pressure(Theta, lambda) [MPa].
     void
-    set_pressure(FollowerLoad::Pressure pressure)
+    set_pressure(FollowerLoad::Pressure pressure) override
     {
       roll_body.load().set_pressure(std::move(pressure));
     }
 
     /// d R_u / d s for the extra follower pressure s g(Theta).
     TrilinosWrappers::MPI::Vector
-    pressure_load_derivative(const std::function<double(double)> &g) const
+    pressure_load_derivative(
+      const std::function<double(double)> &g) const override
     {
       return roll_body.pressure_load_derivative(g);
     }
@@ -90,20 +92,20 @@ namespace rollnip
     /// Assembles the residual (and the tangent) of the current state;
     /// returns the smallest J.
     double
-    assemble(const double load_fraction, const bool with_matrix)
+    assemble(const double load_fraction, const bool with_matrix) override
     {
       return roll_body.assemble(load_fraction, with_matrix);
     }
     /// Factorises the assembled tangent for repeated solves.
     void
-    factorize_tangent()
+    factorize_tangent() override
     {
       linear_solver.factorize(roll_body);
     }
     /// K x = rhs with the last factorisation.
     void
     solve_with_tangent(const TrilinosWrappers::MPI::Vector &rhs,
-                       TrilinosWrappers::MPI::Vector       &x)
+                       TrilinosWrappers::MPI::Vector       &x) override
     {
       linear_solver.solve(roll_body, rhs, x);
     }
@@ -130,7 +132,7 @@ namespace rollnip
     /// Whether run() prints one line per load step and writes VTU (on by
     /// default; the contact iteration turns it off for its inner solves).
     void
-    set_step_log(const bool on)
+    set_step_log(const bool on) override
     {
       log_steps = on;
     }
@@ -138,7 +140,7 @@ namespace rollnip
     SurfaceData
     surface_data(const double load_fraction) const;
     Tensor<1, dim>
-    load_resultant(const double load_fraction) const;
+    load_resultant(const double load_fraction) const override;
     double
     radial_displacement_on_line_of_centres() const;
     double
@@ -169,12 +171,22 @@ namespace rollnip
       return linear_solver.gmres_iterations();
     }
     const TrilinosWrappers::MPI::Vector &
-    current_solution() const
+    owned_solution() const override
+    {
+      return roll_body.owned_solution();
+    }
+    std::vector<SurfaceNode>
+    surface_nodes() const override
+    {
+      return outer_surface_nodes(roll_body.dofs());
+    }
+    const TrilinosWrappers::MPI::Vector &
+    current_solution() const override
     {
       return roll_body.solution();
     }
     void
-    set_solution(const TrilinosWrappers::MPI::Vector &owned)
+    set_solution(const TrilinosWrappers::MPI::Vector &owned) override
     {
       roll_body.set_solution(owned);
     }
@@ -189,7 +201,7 @@ namespace rollnip
       return roll_body.tangent();
     }
     const IndexSet &
-    locally_owned() const
+    locally_owned() const override
     {
       return roll_body.locally_owned();
     }

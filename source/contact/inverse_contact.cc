@@ -55,19 +55,19 @@ namespace rollnip
     }
   } // namespace
 
-  InverseContact::InverseContact(RollProblem                     &problem,
+  InverseContact::InverseContact(ContactBody                     &body,
                                  const Parameters::AllParameters &parameters)
-      : InverseContact(problem,
+      : InverseContact(body,
                        parameters,
                        make_counter_surface(parameters.geometry.outer_radius,
                                             parameters.contact.indenter_radius))
   {}
 
   InverseContact::InverseContact(
-    RollProblem                          &problem,
+    ContactBody                          &body,
     const Parameters::AllParameters      &parameters,
     std::shared_ptr<const CounterSurface> counter_surface)
-      : problem(problem)
+      : body(body)
       , parameters(parameters)
       , counter_surface(std::move(counter_surface))
       , pcout(std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
@@ -82,14 +82,14 @@ namespace rollnip
   void
   InverseContact::collect_surface_nodes()
   {
-    nodes = outer_surface_nodes(problem.dofs());
+    nodes = body.surface_nodes();
   }
 
   std::vector<Tensor<1, dim>>
   InverseContact::nodal_values(const TrilinosWrappers::MPI::Vector &v) const
   {
     std::vector<Tensor<1, dim>> u =
-      surface_values(nodes, v, problem.locally_owned());
+      surface_values(nodes, v, body.locally_owned());
     // Linear theory measures the gap at the reference point along its
     // normal (doc/intro.md eq. 7.3): the tangential displacement moves no
     // point into or away from the indenter. It is not small next to the
@@ -107,8 +107,8 @@ namespace rollnip
   double
   InverseContact::max_nip_angle()
   {
-    if (problem.has_nip_fitted_mesh())
-      return problem.max_nip_angle();
+    if (body.has_nip_fitted_mesh())
+      return body.max_nip_angle();
     if (nodes.empty())
       collect_surface_nodes();
     // The edge row needs two free nodes beyond the zone.
@@ -119,9 +119,9 @@ namespace rollnip
   InverseContact::make_zone(const double theta0)
   {
     // On the nip-fitted mesh the contact edge is moved onto a node.
-    if (problem.has_nip_fitted_mesh())
+    if (body.has_nip_fitted_mesh())
       {
-        problem.fit_mesh_to_nip(theta0);
+        body.fit_mesh_to_nip(theta0);
         nodes.clear();
       }
     if (nodes.empty())
@@ -208,15 +208,15 @@ namespace rollnip
                                  const unsigned int it)
   {
     using namespace IterationControls;
-    TrilinosWrappers::MPI::Vector saved(problem.body().owned_solution());
+    TrilinosWrappers::MPI::Vector saved(body.owned_solution());
     std::string                   why;
     for (unsigned int attempt = 0; attempt < pressure_attempts; ++attempt)
       {
-        saved                                     = problem.current_solution();
+        saved                                     = body.current_solution();
         const std::function<double(double)> from  = applied_pressure;
         const std::vector<double>           to    = iterate.a;
         const std::vector<double>           knots = zone.knots;
-        problem.set_pressure(
+        body.set_pressure(
           [knots, from, to](const double theta, const double lambda) {
             const double f0 = from ? from(theta) : 0.;
             return f0 + lambda * (interpolate(knots, to, theta) - f0);
@@ -224,11 +224,11 @@ namespace rollnip
         // From a converged contact state the change is small: try the
         // whole update in one step (cut back if needed).
         const RunStatus status =
-          applied_pressure ? problem.run(true, 1.) : problem.run(false);
+          applied_pressure ? body.run(true, 1.) : body.run(false);
         if (status.converged)
           return "";
         why = status.message;
-        problem.set_solution(saved);
+        body.set_solution(saved);
         if (!applied_pressure)
           return "the cover cannot carry the first pressure guess (" + why +
                  ")";
@@ -251,7 +251,7 @@ namespace rollnip
   InverseContact::Gaps
   InverseContact::measure_gaps(const Zone &zone, ContactResult &result) const
   {
-    const auto U = nodal_values(problem.current_solution());
+    const auto U = nodal_values(body.current_solution());
     Gaps       gaps;
     gaps.u0 = -U[0][0];
     for (unsigned int i = 0; i < nodes.size(); ++i)
@@ -288,7 +288,7 @@ namespace rollnip
     result.indentation = u0;
     result.conformity  = gaps.conformity;
     result.penetration = std::max(0., -min_gap_outside) / u0;
-    result.nip_load    = -2. * problem.load_resultant(1.)[0];
+    result.nip_load    = -2. * body.load_resultant(1.)[0];
     return gaps;
   }
 
@@ -312,7 +312,7 @@ namespace rollnip
         pcout << "      (the conformity residual grew from " << std::scientific
               << std::setprecision(3) << before << " to " << gaps.residual
               << ": update halved)" << std::fixed << std::endl;
-        problem.set_solution(iterate.accepted_state);
+        body.set_solution(iterate.accepted_state);
         applied_pressure = iterate.accepted_pressure;
         iterate.f_from   = iterate.accepted_a;
         for (unsigned int k = 0; k < zone.m; ++k)
@@ -336,20 +336,20 @@ namespace rollnip
   Eigen::MatrixXd
   InverseContact::sensitivities(const Zone &zone, const Gaps &gaps)
   {
-    problem.assemble(1., true);
-    problem.factorize_tangent();
+    body.assemble(1., true);
+    body.factorize_tangent();
     const auto                   &cs = *counter_surface;
     const double                  u0 = gaps.u0;
-    TrilinosWrappers::MPI::Vector du(problem.body().owned_solution());
+    TrilinosWrappers::MPI::Vector du(body.owned_solution());
     Eigen::MatrixXd               J(zone.m, zone.m);
     for (unsigned int k = 0; k < zone.m; ++k)
       {
         const std::vector<double>    &knots = zone.knots;
-        TrilinosWrappers::MPI::Vector rhs   = problem.pressure_load_derivative(
+        TrilinosWrappers::MPI::Vector rhs   = body.pressure_load_derivative(
           [&knots, k](const double theta) { return hat(knots, k, theta); });
         rhs *= -1.;
         du = 0;
-        problem.solve_with_tangent(rhs, du);
+        body.solve_with_tangent(rhs, du);
         const auto   dU   = nodal_values(du);
         const double du0  = -dU[0][0];
         auto         dgap = [&](const unsigned int i) {
@@ -368,7 +368,7 @@ namespace rollnip
   InverseContact::solve(const double theta0)
   {
     const Zone zone = make_zone(theta0);
-    problem.set_step_log(false);
+    body.set_step_log(false);
     ContactResult result;
     result.theta0 = theta0;
     Iterate iterate;
@@ -387,10 +387,9 @@ namespace rollnip
         applied_theta0 = theta0;
         iterate.f_from = a;
         result.values  = a;
-        problem.set_pressure(
-          [knots, a](const double theta, const double lambda) {
-            return lambda * interpolate(knots, a, theta);
-          });
+        body.set_pressure([knots, a](const double theta, const double lambda) {
+          return lambda * interpolate(knots, a, theta);
+        });
         const Gaps gaps      = measure_gaps(zone, result);
         result.iterations    = it;
         result.min_pressure  = *std::min_element(a.begin(), a.end());
@@ -412,7 +411,7 @@ namespace rollnip
               continue;
             break;
           }
-        iterate.accepted_state    = problem.body().owned_solution();
+        iterate.accepted_state    = body.owned_solution();
         iterate.accepted_pressure = applied_pressure;
         iterate.accepted_a        = iterate.a;
         iterate.accepted_residual = gaps.residual;
@@ -445,9 +444,9 @@ namespace rollnip
   {
     pcout << "Contact iteration, theta0 = " << zone.theta0 * degrees_per_radian
           << " deg, " << zone.m << " pressure parameters";
-    if (problem.has_nip_fitted_mesh())
+    if (body.has_nip_fitted_mesh())
       {
-        const MeshQuality  q = problem.cell_quality();
+        const MeshQuality  q = body.cell_quality();
         std::ostringstream s;
         s << std::setprecision(3)
           << " (nip-fitted mesh: smallest corner Jacobian ratio "
@@ -491,7 +490,7 @@ namespace rollnip
       }
     if (result.converged)
       {
-        converged.state    = problem.body().owned_solution();
+        converged.state    = body.owned_solution();
         converged.pressure = applied_pressure;
         converged.theta0   = zone.theta0;
         return;
@@ -505,12 +504,12 @@ namespace rollnip
     converged = nip;
     // The next nip starts from the last converged one (or from scratch if
     // there is none).
-    TrilinosWrappers::MPI::Vector start(problem.body().owned_solution());
+    TrilinosWrappers::MPI::Vector start(body.owned_solution());
     if (converged.pressure)
       start = converged.state;
     else
       start = 0;
-    problem.set_solution(start);
+    body.set_solution(start);
     applied_pressure = converged.pressure;
     applied_theta0   = converged.theta0;
   }

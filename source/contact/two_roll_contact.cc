@@ -41,7 +41,7 @@ namespace rollnip
     }
   } // namespace
 
-  TwoRollContact::TwoRollContact(RollProblem                     &roll,
+  TwoRollContact::TwoRollContact(ContactBody                     &roll,
                                  const Parameters::AllParameters &parameters)
       : parameters(parameters)
       , mate_parameters(parameters.mating_roll_parameters())

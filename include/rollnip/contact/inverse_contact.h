@@ -1,10 +1,11 @@
 #ifndef rollnip_contact_inverse_contact_h
 #define rollnip_contact_inverse_contact_h
 
+#include <rollnip/contact/contact_body.h>
 #include <rollnip/contact/counter_surface.h>
 #include <rollnip/contact/nip_solver.h>
 #include <rollnip/contact/surface_nodes.h>
-#include <rollnip/problem.h>
+#include <rollnip/parameters.h>
 
 #include <Eigen/Dense>
 
@@ -30,12 +31,12 @@ namespace rollnip
   {
   public:
     /// Against the rigid circle or plane of Contact/Indenter radius.
-    InverseContact(RollProblem                     &problem,
+    InverseContact(ContactBody                     &body,
                    const Parameters::AllParameters &parameters);
 
     /// Against @p counter_surface, which its owner may reshape between
     /// solves (the deformed surface of a mating roll).
-    InverseContact(RollProblem                          &problem,
+    InverseContact(ContactBody                          &body,
                    const Parameters::AllParameters      &parameters,
                    std::shared_ptr<const CounterSurface> counter_surface);
 
@@ -94,7 +95,7 @@ namespace rollnip
     std::vector<Tensor<1, dim>>
     surface_displacements() const
     {
-      return nodal_values(problem.current_solution());
+      return nodal_values(body.current_solution());
     }
 
   private:
@@ -177,7 +178,7 @@ namespace rollnip
     void
     finish(const Zone &zone, ContactResult &result);
 
-    RollProblem                                &problem;
+    ContactBody                                &body;
     const Parameters::AllParameters            &parameters;
     const std::shared_ptr<const CounterSurface> counter_surface;
     std::vector<SurfaceNode>                    nodes;
@@ -186,7 +187,7 @@ namespace rollnip
     /// at most a fraction of Contact/Control tolerance: the nip's P and u0
     /// carry the conformity error, and the control must see past it.
     const double conformity_tolerance;
-    /// The pressure of the problem's current state (empty before the
+    /// The pressure of the body's current state (empty before the
     /// first solve) and its theta0: the next solve starts from them.
     std::function<double(double)> applied_pressure;
     double                        applied_theta0 = 0;

@@ -4,6 +4,7 @@
 #include <rollnip/contact/inverse_contact.h>
 #include <rollnip/contact/nip_control.h>
 #include <rollnip/parameters.h>
+#include <rollnip/problem.h>
 
 #include <memory>
 #include <string>

@@ -34,7 +34,7 @@ namespace rollnip
   class TwoRollContact : public NipSolver
   {
   public:
-    TwoRollContact(RollProblem                     &roll,
+    TwoRollContact(ContactBody                     &roll,
                    const Parameters::AllParameters &parameters);
 
     ContactResult
@@ -86,7 +86,7 @@ namespace rollnip
 
     const Parameters::AllParameters    &parameters;
     const Parameters::AllParameters     mate_parameters;
-    RollProblem                        &roll;
+    ContactBody                        &roll;
     RollProblem                         mate;
     const std::shared_ptr<DeformedRoll> mate_surface;
     InverseContact                      contact;
