@@ -30,6 +30,28 @@ namespace rollnip
       return (1 - w) * y[j - 1] + w * y[j];
     }
 
+    /// Aitken's relaxation factor after @p omega from the last two changes
+    /// of the surface (the first pass keeps @p omega).
+    double
+    aitken(const double                       omega,
+           const std::vector<Tensor<1, dim>> &previous,
+           const std::vector<Tensor<1, dim>> &change)
+    {
+      if (previous.empty())
+        return omega;
+      double num = 0, den = 0;
+      for (unsigned int j = 0; j < change.size(); ++j)
+        {
+          const Tensor<1, dim> d = change[j] - previous[j];
+          num += previous[j] * d;
+          den += d * d;
+        }
+      return den > 0 ? std::clamp(-omega * num / den,
+                                  IterationControls::relaxation_min,
+                                  IterationControls::relaxation_max)
+                     : omega;
+    }
+
     /// The reference angle of the mating roll whose contact edge lies at
     /// the same distance from the line of centres as the roll's at theta0.
     double
@@ -226,29 +248,14 @@ namespace rollnip
               << std::setprecision(3) << moved << " u0, relaxation "
               << std::fixed << omega << ", approach " << std::setprecision(6)
               << result.indentation << " mm, P " << result.nip_load
-              << " N/mm (mating roll " << result.mate_nip_load << ")"
-              << std::endl;
+              << " N/mm (mating roll " << result.mate_nip_load << ")\n";
         if (moved < tolerance)
           {
             result.converged = true;
             break;
           }
         result.converged = false;
-        // Aitken's update of the relaxation from the last two changes.
-        if (!previous_change.empty())
-          {
-            double num = 0, den = 0;
-            for (unsigned int j = 0; j < change.size(); ++j)
-              {
-                const Tensor<1, dim> d = change[j] - previous_change[j];
-                num += previous_change[j] * d;
-                den += d * d;
-              }
-            if (den > 0)
-              omega = std::clamp(-omega * num / den,
-                                 IterationControls::relaxation_min,
-                                 IterationControls::relaxation_max);
-          }
+        omega            = aitken(omega, previous_change, change);
         for (unsigned int j = 0; j < shape.size(); ++j)
           shape[j] += omega * change[j];
         previous_change = change;
