@@ -33,23 +33,16 @@ namespace
   const std::string default_mesh =
     "subsection Mesh\n set Global refinements = 1\nend\n";
 
+  /// The nip at @p theta0_deg of the scene @p text with the contact
+  /// solver Solver (TwoRollContact or InverseContact).
+  template <typename Solver>
   ContactResult
-  solve_two(const std::string &text, const double theta0_deg)
+  solve_nip(const std::string &text, const double theta0_deg)
   {
     const auto  p = testing::parameters_from_string(text);
     RollProblem roll(p, MPI_COMM_WORLD);
     roll.setup();
-    TwoRollContact contact(roll, p);
-    return contact.solve(theta0_deg * deg);
-  }
-
-  ContactResult
-  solve_rigid(const std::string &text, const double theta0_deg)
-  {
-    const auto  p = testing::parameters_from_string(text);
-    RollProblem roll(p, MPI_COMM_WORLD);
-    roll.setup();
-    InverseContact contact(roll, p);
+    Solver contact(roll, p);
     return contact.solve(theta0_deg * deg);
   }
 
@@ -85,8 +78,10 @@ namespace
       default_mesh + "end\n";
     for (const double theta0 : {4., 8.})
       {
-        const ContactResult flat = solve_rigid(default_mesh + contact, theta0);
-        const ContactResult r    = solve_two(default_mesh + two, theta0);
+        const ContactResult flat =
+          solve_nip<InverseContact>(default_mesh + contact, theta0);
+        const ContactResult r =
+          solve_nip<TwoRollContact>(default_mesh + two, theta0);
         std::cout << "  theta0 = " << theta0 << " deg: P " << r.nip_load
                   << " N/mm (plane " << flat.nip_load << "), approach "
                   << r.indentation << " mm (2 u0 of the plane "
@@ -119,9 +114,10 @@ namespace
       default_mesh + "end\n";
     for (const double theta0 : {4., 8.})
       {
-        const ContactResult rigid =
-          solve_rigid(scene + " set Indenter radius = 76.2\nend\n", theta0);
-        const ContactResult r = solve_two(scene + "end\n" + mate, theta0);
+        const ContactResult rigid = solve_nip<InverseContact>(
+          scene + " set Indenter radius = 76.2\nend\n", theta0);
+        const ContactResult r =
+          solve_nip<TwoRollContact>(scene + "end\n" + mate, theta0);
         std::cout << "  theta0 = " << theta0 << " deg: P " << r.nip_load
                   << " N/mm (rigid " << rigid.nip_load << "), approach "
                   << r.indentation << " mm (rigid " << rigid.indentation
