@@ -234,6 +234,7 @@ namespace rollnip
     const Parameters::AllParameters &parameters;
     MPI_Comm                         mpi_communicator;
     ConditionalOStream               pcout;
+    Timer                            run_clock;
     TimerOutput                      timer;
     RollBody                         roll_body;
     LinearSolver                     linear_solver;

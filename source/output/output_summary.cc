@@ -44,7 +44,8 @@ namespace rollnip
           << "gmres_iterations = " << s.gmres_iterations << '\n'
           << "gmres_solves = " << s.gmres_solves << '\n'
           << "threads = " << MultithreadInfo::n_threads() << '\n'
-          << "wall_time_s = " << s.wall_time << '\n'
+          << "wall_time_s = " << s.run_wall_time << '\n'
+          << "last_solve_wall_time_s = " << s.last_solve_wall_time << '\n'
           << "time_setup_s = " << time("setup") << '\n'
           << "time_assembly_s = "
           << time("assembly") + time("assembly (residual)") << '\n'

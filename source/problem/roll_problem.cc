@@ -12,6 +12,7 @@ namespace rollnip
       , mpi_communicator(mpi_communicator)
       , pcout(std::cout,
               Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      , run_clock(mpi_communicator, true)
       , timer(mpi_communicator,
               pcout,
               parameters.output.print_timing ? TimerOutput::summary
@@ -118,6 +119,7 @@ namespace rollnip
                                    linear_solver.n_symbolic_analyses(),
                                    linear_solver.gmres_iterations(),
                                    linear_solver.gmres_solves(),
+                                   run_clock.wall_time(),
                                    stepper.wall_time(),
                                    timer.get_summary_data(
                                      TimerOutput::total_wall_time)};

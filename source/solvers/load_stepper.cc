@@ -82,7 +82,8 @@ namespace rollnip
         msg << "the load cannot be reached: Newton failed at load fraction "
             << target << " after " << cutbacks_in_a_row
             << " failed attempt(s) in a row (increment now " << increment
-            << "); the last converged load fraction is " << lambda;
+            << "); the last converged load fraction is " << lambda
+            << "; the last attempt: " << newton.last_failure;
         return msg.str();
       }
     pcout << "      cutback: Newton failed at load fraction "

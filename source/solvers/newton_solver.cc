@@ -5,6 +5,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <sstream>
 
 namespace rollnip
 {
@@ -110,6 +111,7 @@ namespace rollnip
     // the iteration is stuck (beyond a limit load, say), and the step is
     // given up at once rather than after the full iteration budget.
     unsigned int stalled = 0;
+    last_failure.clear();
     for (unsigned int it = 1; it <= parameters.max_iterations && !broken();
          ++it)
       {
@@ -127,7 +129,8 @@ namespace rollnip
             // the step is cut back like a failed Newton iteration.
             if (!linear_solver.is_iterative())
               throw;
-            pcout << "      (" << one_line_message(e) << ")" << std::endl;
+            last_failure = one_line_message(e);
+            pcout << "      (" << last_failure << ")" << std::endl;
             break;
           }
 
@@ -159,14 +162,31 @@ namespace rollnip
           }
         if (parameters.line_search &&
             stalled >= IterationControls::stuck_iterations)
-          break;
+          {
+            last_failure = "the line search found no decrease in " +
+                           std::to_string(stalled) + " iterations in a row";
+            break;
+          }
         // The tangent at the accepted point, for the next iteration.
         min_J = body.assemble(load_fraction, true);
       }
 
+    if (check_J && !(min_J > 0))
+      last_failure = "J <= 0 somewhere: the cover would invert";
+    else if (!std::isfinite(errors.e_R))
+      last_failure = "the residual is not finite";
+    else if (last_failure.empty())
+      {
+        std::ostringstream why;
+        why << "no convergence in " << parameters.max_iterations
+            << " iterations (|R_u|/|F| " << std::scientific
+            << std::setprecision(2) << errors.e_R << ", sum|J-1|/A "
+            << errors.e_J << ")";
+        last_failure = why.str();
+      }
     body.set_solution(start);
     if (check_J && !(min_J > 0))
-      pcout << "      (J <= 0 somewhere: the cover would invert)" << std::endl;
+      pcout << "      (" << last_failure << ")" << std::endl;
     return false;
   }
 } // namespace rollnip

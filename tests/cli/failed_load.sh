@@ -15,7 +15,7 @@
 # load fraction 1 / 1.3 = 0.769.
 #
 # Asserts: exit code 1; one stderr line 'rollnip: error: the load cannot be
-# reached ...'; summary.txt exists with status = stopped and a load_fraction
+# reached ...' that says why the last attempt failed; summary.txt exists with status = stopped and a load_fraction
 # below 1 (and not beyond the ballooning limit, up to the discretisation
 # error of this coarse mesh); the VTU/PVTU files of the last converged step
 # and solution.pvd exist and are complete XML; no '*.part' files are left.
@@ -89,6 +89,9 @@ pass "exit code 1"
 grep -q '^rollnip: error: .*load cannot be reached' stderr.txt ||
   fail "the error line does not say that the load cannot be reached"
 pass "one stderr line: 'rollnip: error: ... load cannot be reached ...'"
+grep -q -E 'the last attempt: (J <= 0|no convergence in|the line search found no decrease)' stderr.txt ||
+  fail "the error line does not say why the last attempt failed"
+pass "it says why: $(sed 's/.*the last attempt: //' stderr.txt | cut -c1-60)"
 
 summary=out/summary.txt
 [ -f "$summary" ] || fail "$summary was not written"
@@ -123,3 +126,22 @@ pass "solution.pvd lists $base.pvtu, and no later step was written"
 leftovers="$(find out -name '*.part')"
 [ -z "$leftovers" ] || fail "leftover partial files: $leftovers"
 pass "no *.part files left"
+
+# The same tube below its limit (p0 = 0.5 p_lim), solved by GMRES allowed
+# 2 iterations per linear solve: every Newton attempt fails in the linear
+# solver, and the error must say so rather than blame Newton alone.
+sed -e "s/^  set p0 .*/  set p0 = $(awk -v p="$p_lim" 'BEGIN { printf "%.10g", 0.5 * p }')/" \
+    -e 's|^  set Directory .*|  set Directory = gmres_out|' tube.prm > gmres.prm
+cat >> gmres.prm <<PRM
+subsection Linear solver
+  set Method         = gmres-amg
+  set Max iterations = 2
+end
+PRM
+rc=0
+"$rollnip" gmres.prm > gmres_stdout.txt 2> gmres_stderr.txt || rc=$?
+cat gmres_stderr.txt
+[ "$rc" -eq 1 ] || fail "GMRES limited to 2 iterations: exit code $rc, expected 1"
+grep -q 'the last attempt: Linear solver/Method = gmres-amg: GMRES reached' gmres_stderr.txt ||
+  fail "the error line does not name GMRES as the reason"
+pass "GMRES limited to 2 iterations: exit 1, the error names GMRES and its parameter"

@@ -117,7 +117,7 @@ pass "status = converged (${#results[@]} result(s))"
 # Everything except the timings and the process count must agree.
 for dir in out_serial out_parallel; do
   for r in "${results[@]}"; do
-    grep -v -E '^(wall_time_s|time_[a-z_]*_s|mpi_processes|threads|gmres_iterations|gmres_solves) =' \
+    grep -v -E '^([a-z_]*wall_time_s|time_[a-z_]*_s|mpi_processes|threads|gmres_iterations|gmres_solves) =' \
       "$dir/$r/summary.txt" > "$dir/$r/summary_compared.txt"
   done
 done

@@ -17,12 +17,13 @@
 //     combined modulus 1/E* = 1/(4 G) + 1/(4 G_mate) and radius
 //     1/R = 1/R0 + 1/R0_mate (linear theory, dissimilar rolls): the
 //     peak-pressure error shrinks with the nip, P within 1 % for b/h < 0.08
-//     (measured: 0.82 % at 4 deg, 0.46 % at 2 deg).
+//     and closer than at 8 deg (measured: 2.5 % at 8 deg, 0.82 % at 4 deg,
+//     0.46 % at 2 deg).
 
 #include <rollnip/contact/nip_study.h>
 #include <rollnip/contact/two_roll_contact.h>
 
-#include "test_tools.h"
+#include "hertz_comparison.h"
 
 using namespace rollnip;
 
@@ -157,38 +158,18 @@ namespace
     // 1/E* = 1/(4 G) + 1/(4 G_mate), G = 2 (C1 + C2).
     const double G =
       2 * (p.material.layer_C1.back() + p.material.layer_C2.back());
-    const double        G_mate = 2 * (p.mating_roll.material.layer_C1.back() +
+    const double G_mate = 2 * (p.mating_roll.material.layer_C1.back() +
                                p.mating_roll.material.layer_C2.back());
-    const double        E_star = 1 / (1 / (4 * G) + 1 / (4 * G_mate));
-    const double        R      = 1 / (1 / 60.7 + 1 / 76.2);
-    std::vector<double> peak_error, load_error;
+    testing::HertzComparison hertz(1 / (1 / (4 * G) + 1 / (4 * G_mate)),
+                                   1 / (1 / 60.7 + 1 / 76.2),
+                                   55.7);
     for (const double theta0 : {8., 6., 4., 2.})
       {
-        const ContactResult r          = contact.solve(theta0 * deg);
-        const double        b          = r.half_chord;
-        const double        P_hertz    = numbers::PI * b * b * E_star / (4 * R);
-        const double        peak_hertz = 2 * r.nip_load / (numbers::PI * b);
-        checker.check(r.converged,
-                      "theta0 = " + testing::num(theta0) + " deg converged");
-        load_error.push_back(relative(r.nip_load, P_hertz));
-        peak_error.push_back(relative(r.peak_pressure, peak_hertz));
-        std::cout << "  theta0 = " << theta0 << " deg, b/h = " << b / 55.7
-                  << ": P = " << r.nip_load << " N/mm, Hertz " << P_hertz
-                  << " (error " << 100 * load_error.back() << " %), peak "
-                  << r.peak_pressure << " MPa, 2P/(pi b) " << peak_hertz
-                  << " (error " << 100 * peak_error.back() << " %)"
-                  << std::endl;
+        const ContactResult r = contact.solve(theta0 * deg);
+        hertz.add(checker, theta0, r);
         check_equilibrium(checker, r);
       }
-    for (unsigned int i = 1; i < peak_error.size(); ++i)
-      checker.check(peak_error[i] < peak_error[i - 1],
-                    "the peak-pressure error shrinks with the nip: " +
-                      testing::num(100 * peak_error[i - 1]) + " % -> " +
-                      testing::num(100 * peak_error[i]) + " %");
-    for (unsigned int i = 2; i < load_error.size(); ++i)
-      checker.check(load_error[i] < 0.01,
-                    "P within 1 % of Hertz at b/h < 0.08 (" +
-                      testing::num(100 * load_error[i]) + " %)");
+    hertz.check_trends(checker);
   }
 } // namespace
 

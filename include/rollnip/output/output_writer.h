@@ -28,8 +28,9 @@ namespace rollnip
     unsigned int                     symbolic_factorisations;
     unsigned int                     gmres_iterations;
     unsigned int                     gmres_solves;
-    double                           wall_time; ///< [s]
-    std::map<std::string, double>    times;     ///< [s] per timer section
+    double run_wall_time;        ///< [s] since the problem was built
+    double last_solve_wall_time; ///< [s] of the last load-stepping solve
+    std::map<std::string, double> times; ///< [s] per timer section
   };
 
   /**

@@ -9,6 +9,7 @@
 #include <rollnip/parameters.h>
 #include <rollnip/solvers/linear_solver.h>
 
+#include <string>
 #include <vector>
 
 namespace rollnip
@@ -51,6 +52,9 @@ namespace rollnip
     /// Iterations and e_R of the last converged solve.
     unsigned int last_iterations = 0;
     double       last_residual   = 0;
+
+    /// Why the last failed solve failed, in words for the user.
+    std::string last_failure;
 
     const std::vector<NewtonRecord> &
     log() const
