@@ -136,6 +136,15 @@ namespace rollnip
     const double                        edge =
       linear ? parameters.geometry.outer_radius * std::sin(result.theta0)
                                     : result.half_chord;
+    // The mating point at the edge, on the part of its surface where x2
+    // still grows with the angle.
+    std::size_t n = 1;
+    while (n < mate_x2.size() && mate_x2[n] > mate_x2[n - 1])
+      ++n;
+    mate_edge_angle =
+      piecewise_linear({mate_x2.begin(), mate_x2.begin() + n},
+                       {mate_theta.begin(), mate_theta.begin() + n},
+                       edge);
     const std::function<double(double)> to = [=](const double theta_mate) {
       const double at = piecewise_linear(mate_theta, mate_x2, theta_mate);
       return at >= edge ? 0. : f(piecewise_linear(x2, theta, at));
@@ -180,9 +189,36 @@ namespace rollnip
   }
 
   void
+  TwoRollContact::fit_mate_mesh(const double angle)
+  {
+    mate_fit_angle = std::min(angle, mate.max_nip_angle());
+    mate.fit_mesh_to_nip(mate_fit_angle);
+    mate_nodes = outer_surface_nodes(mate.dofs());
+  }
+
+  bool
+  TwoRollContact::refit_mate_mesh()
+  {
+    if (!mate.has_nip_fitted_mesh() ||
+        mate_refits >= IterationControls::max_mate_refits ||
+        std::abs(mate_edge_angle - mate_fit_angle) <=
+          IterationControls::mate_refit_tolerance * mate_fit_angle)
+      return false;
+    ++mate_refits;
+    pcout << "  the mating roll's contact edge lies at "
+          << mate_edge_angle * degrees_per_radian << " deg, its mesh at "
+          << mate_fit_angle * degrees_per_radian << " deg: refitted"
+          << std::endl;
+    fit_mate_mesh(mate_edge_angle);
+    return true;
+  }
+
+  void
   TwoRollContact::restore(const InverseContact::Converged &roll_nip)
   {
     contact.restore_converged(roll_nip);
+    if (mate.has_nip_fitted_mesh() && mate_converged_fit_angle > 0)
+      fit_mate_mesh(mate_converged_fit_angle);
     if (mate_converged_pressure)
       mate.set_solution(mate_converged);
     else
@@ -201,9 +237,14 @@ namespace rollnip
   ContactResult
   TwoRollContact::solve(const double theta0)
   {
+    // The mating roll's contact edge: the estimate, scaled as it was off
+    // at the last converged nip; refitted once the passes show it.
+    const double estimate = mate_nip_angle(parameters, theta0);
+    mate_refits           = 0;
     if (mate.has_nip_fitted_mesh())
-      mate.fit_mesh_to_nip(mate_nip_angle(parameters, theta0));
-    mate_nodes = outer_surface_nodes(mate.dofs());
+      fit_mate_mesh(mate_angle_factor * estimate);
+    else
+      mate_nodes = outer_surface_nodes(mate.dofs());
     // The passes converge the roll's contact many times: a failed nip goes
     // back to this one.
     const InverseContact::Converged last = contact.last_converged();
@@ -249,13 +290,22 @@ namespace rollnip
               << std::fixed << omega << ", approach " << std::setprecision(6)
               << result.indentation << " mm, P " << result.nip_load
               << " N/mm (mating roll " << result.mate_nip_load << ")\n";
+        result.converged = false;
+        if (moved < tolerance && refit_mate_mesh())
+          {
+            result.message = "the two rolls did not agree after the mating "
+                             "roll's mesh was refitted in pass " +
+                             std::to_string(k);
+            shape = mate_shape();
+            previous_change.clear();
+            continue;
+          }
         if (moved < tolerance)
           {
             result.converged = true;
             break;
           }
-        result.converged = false;
-        omega            = aitken(omega, previous_change, change);
+        omega = aitken(omega, previous_change, change);
         for (unsigned int j = 0; j < shape.size(); ++j)
           shape[j] += omega * change[j];
         previous_change = change;
@@ -266,9 +316,12 @@ namespace rollnip
       }
     if (result.converged)
       {
-        result.message          = "";
-        mate_converged          = mate.body().owned_solution();
-        mate_converged_pressure = mate_pressure;
+        result.message           = "";
+        mate_converged           = mate.body().owned_solution();
+        mate_converged_pressure  = mate_pressure;
+        mate_converged_fit_angle = mate_fit_angle;
+        if (mate.has_nip_fitted_mesh())
+          mate_angle_factor = mate_fit_angle / estimate;
       }
     else
       restore(last);

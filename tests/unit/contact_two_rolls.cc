@@ -7,12 +7,15 @@
 //     discretisation error.
 //  2. A mating cover 1000 times stiffer than the roll's is the rigid
 //     cylinder of its radius: P agrees within 0.3 % (the stiff cover still
-//     adds about 1/1000 of its compliance, and the mating mesh, fitted to
-//     an estimate of its contact edge only, carries the pressure with its
-//     own quadrature error), the approach within 0.1 %.
+//     adds about 1/1000 of its compliance: a thin-layer estimate,
+//     (h_mate/h)^3 G/G_mate, gives 0.17 %; measured 0.07 and 0.09 %), the
+//     approach within 0.1 %.
 //  3. Equilibrium: P from the mating roll's load resultant agrees with the
-//     first roll's within 0.3 %; no node of either surface outside the zone
-//     lies inside the other (penetration below 1e-4 u0).
+//     first roll's within 0.01 % (measured: 3e-5 or less; the mating
+//     roll's mesh is refitted until a node lies on its contact edge, which
+//     is worth 0.07 % here: the edge between nodes gave 6.8e-4); no node of
+//     either surface outside the zone lies inside the other (penetration
+//     below 1e-4 u0).
 //  4. Small nips on thick covers approach plane-strain Hertz with the
 //     combined modulus 1/E* = 1/(4 G) + 1/(4 G_mate) and radius
 //     1/R = 1/R0 + 1/R0_mate (linear theory, dissimilar rolls): the
@@ -56,11 +59,12 @@ namespace
   void
   check_equilibrium(testing::Checker &checker, const ContactResult &r)
   {
-    checker.check(relative(r.mate_nip_load, r.nip_load) < 3e-3,
+    checker.check(relative(r.mate_nip_load, r.nip_load) < 1e-4,
                   "P from the mating roll " + testing::num(r.mate_nip_load) +
                     " N/mm = P " + testing::num(r.nip_load) +
-                    " N/mm within "
-                    "0.3 %");
+                    " N/mm within 0.01 % (" +
+                    testing::num(100 * relative(r.mate_nip_load, r.nip_load)) +
+                    " %)");
     checker.check(r.penetration < 1e-4 && r.mate_penetration < 1e-4,
                   "no penetration outside the zone (" +
                     testing::num(r.penetration) + ", " +

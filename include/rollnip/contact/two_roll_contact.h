@@ -80,6 +80,19 @@ namespace rollnip
     void
     measure_mate(ContactResult &result) const;
 
+    /// Fits the mating roll's nip-fitted mesh to its reference angle
+    /// @p angle [rad] (bounded by what the mesh takes) and collects its
+    /// surface nodes again.
+    void
+    fit_mate_mesh(const double angle);
+
+    /// Refits the mating roll's mesh so that a node lies on its contact
+    /// edge (the mating point at the deformed x2 of the first roll's edge,
+    /// found by load_mate) when the edge has moved off the fitted node;
+    /// true if it did.
+    bool
+    refit_mate_mesh();
+
     /// Back to the last converged pair of states, @p roll_nip the roll's.
     void
     restore(const InverseContact::Converged &roll_nip);
@@ -91,6 +104,12 @@ namespace rollnip
     const std::shared_ptr<DeformedRoll> mate_surface;
     InverseContact                      contact;
     std::vector<SurfaceNode>            mate_nodes;
+    /// The reference angle of the mating roll's contact edge, as loaded
+    /// last, and the angle its mesh is fitted to [rad]; their ratio to the
+    /// first estimate at the last converged nip starts the next one.
+    double       mate_edge_angle = 0, mate_fit_angle = 0, mate_angle_factor = 1;
+    double       mate_converged_fit_angle = 0;
+    unsigned int mate_refits              = 0;
     /// The mating roll's pressure f(Theta_mate) of its current state.
     std::function<double(double)> mate_pressure;
     /// The mating roll's state and pressure of the last converged nip.

@@ -58,6 +58,11 @@ namespace rollnip
     constexpr double two_roll_tolerance_factor = 10;
     /// Bounds of Aitken's relaxation factor.
     constexpr double relaxation_min = 0.05, relaxation_max = 1;
+    /// The mating roll's nip-fitted mesh is refitted when its contact edge
+    /// lies off the fitted node by more than this fraction of the angle.
+    constexpr double mate_refit_tolerance = 1e-3;
+    /// Refits per two-roll solve at most (each costs a few passes).
+    constexpr unsigned int max_mate_refits = 4;
   } // namespace IterationControls
 } // namespace rollnip
 
