@@ -30,6 +30,17 @@ namespace rollnip
       return (1 - w) * y[j - 1] + w * y[j];
     }
 
+    /// @p to - @p from, point by point.
+    std::vector<Tensor<1, dim>>
+    difference(const std::vector<Point<dim>> &to,
+               const std::vector<Point<dim>> &from)
+    {
+      std::vector<Tensor<1, dim>> d(from.size());
+      for (unsigned int j = 0; j < from.size(); ++j)
+        d[j] = to[j] - from[j];
+      return d;
+    }
+
     /// Aitken's relaxation factor after @p omega from the last two changes
     /// of the surface (the first pass keeps @p omega).
     double
@@ -237,14 +248,7 @@ namespace rollnip
   ContactResult
   TwoRollContact::solve(const double theta0)
   {
-    // The mating roll's contact edge: the estimate, scaled as it was off
-    // at the last converged nip; refitted once the passes show it.
-    const double estimate = mate_nip_angle(parameters, theta0);
-    mate_refits           = 0;
-    if (mate.has_nip_fitted_mesh())
-      fit_mate_mesh(mate_angle_factor * estimate);
-    else
-      mate_nodes = outer_surface_nodes(mate.dofs());
+    const double estimate = fit_mate_to_estimate(theta0);
     // The passes converge the roll's contact many times: a failed nip goes
     // back to this one.
     const InverseContact::Converged last = contact.last_converged();
@@ -275,15 +279,11 @@ namespace rollnip
             break;
           }
         // How far the mating surface moved under the new pressure.
-        const auto                  new_shape = mate_shape();
-        std::vector<Tensor<1, dim>> change(shape.size());
-        double                      largest = 0;
-        for (unsigned int j = 0; j < shape.size(); ++j)
-          {
-            change[j] = new_shape[j] - shape[j];
-            largest   = std::max(largest, change[j].norm());
-          }
-        const double moved = largest / result.indentation;
+        const std::vector<Tensor<1, dim>> change =
+          difference(mate_shape(), shape);
+        double moved = 0;
+        for (const auto &d : change)
+          moved = std::max(moved, d.norm() / result.indentation);
         measure_mate(result);
         pcout << "  pass " << k << ": mating surface moved " << std::scientific
               << std::setprecision(3) << moved << " u0, relaxation "
@@ -315,17 +315,35 @@ namespace rollnip
                          std::to_string(moved) + " u0)";
       }
     if (result.converged)
-      {
-        result.message           = "";
-        mate_converged           = mate.body().owned_solution();
-        mate_converged_pressure  = mate_pressure;
-        mate_converged_fit_angle = mate_fit_angle;
-        if (mate.has_nip_fitted_mesh())
-          mate_angle_factor = mate_fit_angle / estimate;
-      }
+      keep_converged(result, estimate);
     else
       restore(last);
     return result;
+  }
+
+  double
+  TwoRollContact::fit_mate_to_estimate(const double theta0)
+  {
+    // The estimate, scaled as it was off at the last converged nip; the
+    // passes refit the mesh once they show the edge.
+    const double estimate = mate_nip_angle(parameters, theta0);
+    mate_refits           = 0;
+    if (mate.has_nip_fitted_mesh())
+      fit_mate_mesh(mate_angle_factor * estimate);
+    else
+      mate_nodes = outer_surface_nodes(mate.dofs());
+    return estimate;
+  }
+
+  void
+  TwoRollContact::keep_converged(ContactResult &result, const double estimate)
+  {
+    result.message           = "";
+    mate_converged           = mate.body().owned_solution();
+    mate_converged_pressure  = mate_pressure;
+    mate_converged_fit_angle = mate_fit_angle;
+    if (mate.has_nip_fitted_mesh())
+      mate_angle_factor = mate_fit_angle / estimate;
   }
 
   void

@@ -115,24 +115,8 @@ namespace rollnip
     for (unsigned int it = 1; it <= parameters.max_iterations && !broken();
          ++it)
       {
-        TrilinosWrappers::MPI::Vector rhs(body.residual());
-        rhs *= -1.;
-        update = 0;
-        try
-          {
-            linear_solver.factorize(body);
-            linear_solver.solve(body, rhs, update);
-          }
-        catch (const std::exception &e)
-          {
-            // Only the iterative solver fails softly (too many iterations):
-            // the step is cut back like a failed Newton iteration.
-            if (!linear_solver.is_iterative())
-              throw;
-            last_failure = one_line_message(e);
-            pcout << "      (" << last_failure << ")" << std::endl;
-            break;
-          }
+        if (!solve_linear_system(update))
+          break;
 
         bool         decreased = false;
         const double alpha =
@@ -150,11 +134,7 @@ namespace rollnip
         if (broken())
           break;
         stalled = decreased ? 0 : stalled + 1;
-        if (errors.e_R < parameters.residual_tolerance + errors.floor_R &&
-            errors.e_J < parameters.constraint_tolerance &&
-            (e_u < parameters.increment_tolerance ||
-             errors.e_R < IterationControls::residual_only_convergence *
-                            parameters.residual_tolerance))
+        if (converged(errors, e_u))
           {
             last_iterations = it;
             last_residual   = errors.e_R;
@@ -171,8 +151,53 @@ namespace rollnip
         min_J = body.assemble(load_fraction, true);
       }
 
-    if (check_J && !(min_J > 0))
-      last_failure = "J <= 0 somewhere: the cover would invert";
+    explain_failure(check_J && !(min_J > 0), errors);
+    body.set_solution(start);
+    return false;
+  }
+
+  bool
+  NewtonSolver::solve_linear_system(TrilinosWrappers::MPI::Vector &update)
+  {
+    TrilinosWrappers::MPI::Vector rhs(body.residual());
+    rhs *= -1.;
+    update = 0;
+    try
+      {
+        linear_solver.factorize(body);
+        linear_solver.solve(body, rhs, update);
+      }
+    catch (const std::exception &e)
+      {
+        // Only the iterative solver fails softly (too many iterations):
+        // the step is cut back like a failed Newton iteration.
+        if (!linear_solver.is_iterative())
+          throw;
+        last_failure = one_line_message(e);
+        pcout << "      (" << last_failure << ")" << std::endl;
+        return false;
+      }
+    return true;
+  }
+
+  bool
+  NewtonSolver::converged(const Errors &errors, const double e_u) const
+  {
+    return errors.e_R < parameters.residual_tolerance + errors.floor_R &&
+           errors.e_J < parameters.constraint_tolerance &&
+           (e_u < parameters.increment_tolerance ||
+            errors.e_R < IterationControls::residual_only_convergence *
+                           parameters.residual_tolerance);
+  }
+
+  void
+  NewtonSolver::explain_failure(const bool inverted, const Errors &errors)
+  {
+    if (inverted)
+      {
+        last_failure = "J <= 0 somewhere: the cover would invert";
+        pcout << "      (" << last_failure << ")" << std::endl;
+      }
     else if (!std::isfinite(errors.e_R))
       last_failure = "the residual is not finite";
     else if (last_failure.empty())
@@ -184,9 +209,5 @@ namespace rollnip
             << errors.e_J << ")";
         last_failure = why.str();
       }
-    body.set_solution(start);
-    if (check_J && !(min_J > 0))
-      pcout << "      (" << last_failure << ")" << std::endl;
-    return false;
   }
 } // namespace rollnip

@@ -80,6 +80,17 @@ namespace rollnip
     void
     measure_mate(ContactResult &result) const;
 
+    /// Fits the mating roll's mesh (if nip-fitted) to the estimate of its
+    /// contact edge at the first roll's @p theta0 and collects its surface
+    /// nodes; returns the unscaled estimate [rad].
+    double
+    fit_mate_to_estimate(const double theta0);
+
+    /// Keeps the converged pair of @p result as the state to go back to,
+    /// and how far the estimate was off.
+    void
+    keep_converged(ContactResult &result, const double estimate);
+
     /// Fits the mating roll's nip-fitted mesh to its reference angle
     /// @p angle [rad] (bounded by what the mesh takes) and collects its
     /// surface nodes again.

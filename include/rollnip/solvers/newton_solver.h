@@ -81,6 +81,20 @@ namespace rollnip
     double
     residual_round_off_floor() const;
 
+    /// Solves the tangent system for the Newton @p update; false (with
+    /// last_failure) when the iterative solver does not converge.
+    bool
+    solve_linear_system(TrilinosWrappers::MPI::Vector &update);
+
+    /// The convergence test of the class documentation.
+    bool
+    converged(const Errors &errors, const double e_u) const;
+
+    /// Sets last_failure for a failed solve that ended with @p errors
+    /// (@p inverted: some J <= 0), unless a cause is already set.
+    void
+    explain_failure(const bool inverted, const Errors &errors);
+
     /// Backtracks along @p update from the current state; returns the
     /// step length taken, with @p errors, @p min_J and @p decreased of the
     /// accepted point.
