@@ -1,4 +1,5 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
 
 #include <rollnip/engineering_inputs.h>
 #include <rollnip/material/hardness.h>
@@ -10,6 +11,7 @@
 #include <iostream>
 #include <limits>
 #include <sstream>
+#include <vector>
 
 namespace rollnip
 {
@@ -116,9 +118,10 @@ namespace rollnip
         "Hardness",
         "Hardness of the cover on Hardness scale, instead of C1 and C2: "
         "Young's modulus E is estimated from it (an estimate: see "
-        "doc/engineering_inputs.md) and C1 + C2 = E/6. Allowed: empty (use "
-        "C1, C2) or a number within the scale's range (Shore A 30 to 90, "
-        "IRHD 10 to 95, P&J 12 to 250)");
+        "doc/engineering_inputs.md) and C1 + C2 = E/6; for a layered cover "
+        "one value per layer, from the core out. Allowed: empty (use C1, "
+        "C2) or numbers within the scale's range (Shore A 30 to 90, IRHD "
+        "10 to 95, P&J 12 to 250)");
       prm.declare_entry("Hardness scale",
                         "Shore A",
                         Patterns::Anything(),
@@ -134,6 +137,41 @@ namespace rollnip
         "neo-Hookean (in-plane results depend on C1 + C2 only)");
     }
 
+    namespace
+    {
+      /// The readings of Material/Hardness, one per layer, each within the
+      /// range of its scale's relation.
+      std::vector<double>
+      hardness_readings(const std::string &text, const Hardness::Scale scale)
+      {
+        const Hardness::Range range = Hardness::validity_range(scale);
+        std::vector<double>   readings;
+        for (const auto &item : Utilities::split_string_list(text))
+          {
+            std::size_t used  = 0;
+            double      value = std::numeric_limits<double>::quiet_NaN();
+            try
+              {
+                value = std::stod(item, &used);
+              }
+            catch (...)
+              {
+                used = 0;
+              }
+            AssertThrow(used == item.size() && value >= range.min &&
+                          value <= range.max,
+                        ExcMessage("Material/Hardness = '" + item + "' " +
+                                   Hardness::to_string(scale) +
+                                   " is outside the range of its modulus "
+                                   "relation, " +
+                                   Parameters::number(range.min) + " to " +
+                                   Parameters::number(range.max)));
+            readings.push_back(value);
+          }
+        return readings;
+      }
+    } // namespace
+
     void
     parse_material(ParameterHandler &prm, Parameters::Material &material)
     {
@@ -146,37 +184,35 @@ namespace rollnip
       AssertThrow(at_default(prm, "C1", 0.25) && at_default(prm, "C2", 0.25),
                   ExcMessage("Material: give either Hardness or C1 and C2, "
                              "not both"));
-      std::size_t used  = 0;
-      double      value = std::numeric_limits<double>::quiet_NaN();
-      try
+      const std::vector<double> readings = hardness_readings(text, scale);
+      const std::size_t         n_layers =
+        std::max<std::size_t>(1, material.layer_thicknesses.size());
+      AssertThrow(readings.size() == n_layers,
+                  ExcMessage("Material/Hardness has " +
+                             std::to_string(readings.size()) +
+                             " value(s) but the cover has " +
+                             std::to_string(n_layers) +
+                             " layer(s) (Material/Layer thicknesses): give "
+                             "one hardness per layer, from the core out"));
+      const double ratio = prm.get_double("C2/C1 ratio");
+      material.layer_C1.clear();
+      material.layer_C2.clear();
+      std::string readings_text;
+      for (const double value : readings)
         {
-          value = std::stod(text, &used);
+          const double E = Hardness::youngs_modulus(value, scale);
+          const auto   c = Hardness::mooney_rivlin_from_modulus(E, ratio);
+          material.layer_C1.push_back(c.C1);
+          material.layer_C2.push_back(c.C2);
+          // The surface layer's modulus is the one the nip report quotes.
+          material.hardness_modulus = E;
+          readings_text += (readings_text.empty() ? "" : ", ") +
+                           Parameters::number(value);
         }
-      catch (...)
-        {
-          used = 0;
-        }
-      const Hardness::Range range = Hardness::validity_range(scale);
-      AssertThrow(used == text.size() && value >= range.min &&
-                    value <= range.max,
-                  ExcMessage("Material/Hardness = '" + text + "' " +
-                             Hardness::to_string(scale) +
-                             " is outside the range of its modulus relation, " +
-                             Parameters::number(range.min) + " to " +
-                             Parameters::number(range.max)));
-      const double E = Hardness::youngs_modulus(value, scale);
-      const auto   c =
-        Hardness::mooney_rivlin_from_modulus(E, prm.get_double("C2/C1 ratio"));
-      AssertThrow(material.layer_thicknesses.empty(),
-                  ExcMessage("Material/Hardness describes a one-layer cover: "
-                             "with Layer thicknesses give C1 and C2 per "
-                             "layer"));
-      material.layer_C1             = {c.C1};
-      material.layer_C2             = {c.C2};
-      material.hardness_modulus     = E;
-      material.hardness_description = Parameters::number(value) + " " +
-                                      Hardness::to_string(scale) + ", " +
-                                      Hardness::source(scale);
+      material.hardness_description =
+        readings_text + " " + Hardness::to_string(scale) +
+        (readings.size() > 1 ? " (layers from the core out)" : "") + ", " +
+        Hardness::source(scale);
     }
 
     void
@@ -190,10 +226,17 @@ namespace rollnip
       prm.declare_entry("Load unit",
                         "N/mm",
                         Patterns::Anything(),
-                        "Unit of the line loads in Values (Mode = load) and "
-                        "in the nip report. Allowed: N/mm, kN/m (the same "
-                        "number) or pli (pound-force per linear inch, "
-                        "0.17512685 N/mm)");
+                        "Unit of the loads in Values (Mode = load) and in "
+                        "the nip report. Allowed: N/mm, kN/m (the same "
+                        "number), pli (pound-force per linear inch, "
+                        "0.17512684 N/mm), or a total force N or kN over the "
+                        "roll's Face length");
+      declare_optional(prm,
+                       "Face length",
+                       "Loaded face length of the roll [mm], with Load unit "
+                       "= N or kN (a total force): the line load is the "
+                       "force over this length. Allowed: empty or a "
+                       "positive number");
       Parameters::declare_documented(
         prm,
         "Surface speed",
@@ -206,7 +249,8 @@ namespace rollnip
     void
     parse_contact(ParameterHandler &prm, Parameters::Contact &contact)
     {
-      contact.load_unit     = LineLoadUnit::from_string(prm.get("Load unit"));
+      contact.load_unit = LineLoadUnit::from_string(
+        prm.get("Load unit"), optional_number(prm, "Contact", "Face length"));
       contact.surface_speed = prm.get_double("Surface speed");
       if (contact.mode == Parameters::ContactMode::load)
         for (double &v : contact.values)
@@ -258,19 +302,31 @@ namespace rollnip
           << " mm: R0 = " << p.geometry.outer_radius
           << " mm, R1 = " << p.geometry.inner_radius << " mm\n";
       if (p.material.hardness_modulus > 0)
-        s << "Material: " << p.material.hardness_description
-          << ": E = " << p.material.hardness_modulus
-          << " MPa (an estimate from hardness), G = E/3 = "
-          << p.material.hardness_modulus / 3
-          << " MPa, C1 = " << p.material.layer_C1.back()
-          << " MPa, C2 = " << p.material.layer_C2.back() << " MPa\n";
+        {
+          const MaterialTable layers(p.material);
+          s << "Material: " << p.material.hardness_description << ":";
+          for (unsigned int j = 0; j < layers.n_layers(); ++j)
+            s << (j ? ";" : "")
+              << (layers.n_layers() > 1 ? " layer " + std::to_string(j + 1)
+                                        : std::string())
+              << " E = " << 3 * layers[j].shear_modulus()
+              << " MPa (an estimate from hardness), G = E/3 = "
+              << layers[j].shear_modulus()
+              << " MPa, C1 = " << p.material.layer_C1[j]
+              << " MPa, C2 = " << p.material.layer_C2[j] << " MPa";
+          s << '\n';
+        }
       const auto &c = p.contact;
       if (c.mode == Parameters::ContactMode::load && c.load_unit.name != "N/mm")
         {
-          s << "Contact: line loads";
+          s << (c.load_unit.is_total_force() ? "Contact: total forces"
+                                              : "Contact: line loads");
           for (unsigned int i = 0; i < c.values.size(); ++i)
             s << (i ? ", " : " ") << c.values[i] / c.load_unit.to_n_per_mm
               << ' ' << c.load_unit.name << " = " << c.values[i] << " N/mm";
+          if (c.load_unit.is_total_force())
+            s << " (over a face length of " << c.load_unit.face_length
+              << " mm)";
           s << '\n';
         }
       return s.str();
@@ -289,6 +345,8 @@ namespace rollnip
               : std::string("C1, C2"))
         << '\n'
         << "line_load_unit = " << p.contact.load_unit.name << '\n';
+      if (p.contact.load_unit.is_total_force())
+        s << "face_length_mm = " << p.contact.load_unit.face_length << '\n';
       return s.str();
     }
   } // namespace EngineeringInputs

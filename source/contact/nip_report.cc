@@ -58,6 +58,9 @@ namespace rollnip
                       : ", from C1 and C2");
       if (dwell)
         std::cout << "; surface speed " << c.surface_speed << " m/min";
+      if (c.load_unit.is_total_force())
+        std::cout << "; total force on a face of " << c.load_unit.face_length
+                  << " mm";
       std::cout << ")" << std::endl
                 << std::setw(16) << "load [" + c.load_unit.name + "]"
                 << "  width 2b [mm]  u0 [mm]  peak p [MPa]  mean p [MPa]"
@@ -84,7 +87,7 @@ namespace rollnip
       const bool   dwell    = c.surface_speed > 0;
       const bool   estimate = p.material.hardness_modulus > 0;
       write_atomically(file, [&](std::ostream &out) {
-        out << "nip,line_load_" << c.load_unit.column_suffix()
+        out << "nip," << c.load_unit.column_name()
             << ",line_load_N_per_mm,nip_width_2b_mm,indentation_u0_mm,"
                "peak_pressure_MPa,mean_pressure_MPa,"
             << (dwell ? "surface_speed_m_per_min,dwell_time_ms," : "")
