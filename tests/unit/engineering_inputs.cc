@@ -5,9 +5,13 @@
 //    R0 = 125, R1 = 111.5, Rbar = 150 mm: the same numbers (1e-12).
 //  - Hardness = 60 Shore A against C1 = E/6, C2 = 0 with Gent's E written
 //    out in 17 digits: the same (1e-12).
-//  - The load as 40 N/mm, 40 kN/m and 228.4 pli: the same target, so the
-//    same nip; kN/m exactly, pli to the control tolerance (P within 1e-6,
-//    u0 and b within 1e-5).
+//  - The load as 40 N/mm, 40 kN/m, 228.4 pli and a total force of 200 kN
+//    on a 5000 mm face: the same target, so the same nip; kN/m and the
+//    total force exactly, pli to the control tolerance (P within 1e-6, u0
+//    and b within 1e-5).
+//  - A two-layer cover given as Hardness = 90, 60 Shore A: each layer's
+//    C1 + C2 is its own E/6 from Gent's relation (1e-15), and the nip
+//    report's modulus is the top layer's.
 
 #include <rollnip/contact/nip_study.h>
 #include <rollnip/material/hardness.h>
@@ -72,6 +76,34 @@ namespace
                      rel(a.indentation, b.indentation),
                      rel(a.half_chord, b.half_chord)});
   }
+
+  /// Hardness per layer: each layer's Mooney-Rivlin constants from its own
+  /// reading.
+  void
+  check_layer_hardness(testing::Checker &checker)
+  {
+    const auto p = testing::parameters_from_string(
+      "subsection Material\n set Layer thicknesses = 3, 10.5\n"
+      " set Hardness = 90, 60\n set C2/C1 ratio = 0.25\nend\n");
+    const auto  &m = p.material;
+    const double E_base = Hardness::youngs_modulus_from_shore_a(90);
+    const double E_top  = Hardness::youngs_modulus_from_shore_a(60);
+    auto         close  = [](const double a, const double b) {
+      return std::abs(a - b) <= 1e-15 * std::abs(b);
+    };
+    checker.check(m.n_layers() == 2 && m.layer_C2.size() == 2 &&
+                    close(m.layer_C1[0] + m.layer_C2[0], E_base / 6) &&
+                    close(m.layer_C1[1] + m.layer_C2[1], E_top / 6) &&
+                    close(m.layer_C2[1], 0.25 * m.layer_C1[1]) &&
+                    m.hardness_modulus == E_top,
+                  "Hardness = 90, 60 Shore A: C1 + C2 = " +
+                    testing::num(m.layer_C1[0] + m.layer_C2[0]) + ", " +
+                    testing::num(m.layer_C1[1] + m.layer_C2[1]) +
+                    " MPa (E/6 = " + testing::num(E_base / 6) + ", " +
+                    testing::num(E_top / 6) +
+                    "), C2 = C1/4, the report's E = " +
+                    testing::num(m.hardness_modulus) + " MPa (top layer)");
+  }
 } // namespace
 
 int
@@ -118,5 +150,15 @@ main(int argc, char **argv)
                 pli + " pli: P = " + testing::num(by_pli.nip_load) +
                   " N/mm, the same nip (difference " +
                   testing::num(difference(by_pli, base)) + " < 1e-5)");
+  const ContactResult by_force =
+    solve(radii + hardness +
+          "subsection Contact\n set Mode = load\n " + radius +
+          "\n set Load unit = kN\n set Face length = 5000\n"
+          " set Values = 200\nend\n");
+  checker.check(by_force.converged && difference(by_force, base) < 1e-12,
+                "200 kN on a 5000 mm face: the same nip (difference " +
+                  testing::num(difference(by_force, base)) + ")");
+
+  check_layer_hardness(checker);
   return checker.result();
 }
