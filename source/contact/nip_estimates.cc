@@ -3,7 +3,9 @@
 #include <rollnip/contact/nip_estimates.h>
 #include <rollnip/material/material_table.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace rollnip
 {
@@ -27,17 +29,37 @@ namespace rollnip
     }
 
     double
+    layered_compliance(const Parameters::Geometry &geometry,
+                       const Parameters::Material &material)
+    {
+      // Shear flow in a thin bonded layer under a frictionless nip: the
+      // shear stress grows linearly from the free top to the core, so the
+      // flux per pressure gradient is int_0^h (h - s)^2 / G(s) ds, layer by
+      // layer from the core (s = 0) out; h^3/(3 G) for one layer.
+      const double        h = geometry.outer_radius - geometry.inner_radius;
+      const MaterialTable layers(material);
+      std::vector<double> thickness = material.layer_thicknesses;
+      if (thickness.empty())
+        thickness = {h};
+      double s = 0, compliance = 0;
+      for (unsigned int j = 0; j < thickness.size(); ++j)
+        {
+          const double top = std::min(h, s + thickness[j]);
+          compliance += (std::pow(h - s, 3) - std::pow(h - top, 3)) /
+                        layers[j].shear_modulus();
+          s = top;
+        }
+      return compliance;
+    }
+
+    double
     thin_layer_compliance(const Parameters::AllParameters &p)
     {
-      const auto cover = [](const Parameters::Geometry &g,
-                            const Parameters::Material &m) {
-        const double h = g.outer_radius - g.inner_radius;
-        return h * h * h / surface_shear_modulus(m);
-      };
-      return cover(p.geometry, p.material) +
-             (p.mating_roll.covered
-                ? cover(p.mating_roll.geometry, p.mating_roll.material)
-                : 0.);
+      return layered_compliance(p.geometry, p.material) +
+             (p.mating_roll.covered ?
+                layered_compliance(p.mating_roll.geometry,
+                                   p.mating_roll.material) :
+                0.);
     }
 
     double

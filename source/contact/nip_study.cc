@@ -209,10 +209,12 @@ namespace rollnip
     }
 
     /// The nip characteristic on the screen and, whole, as
-    /// @p top/nip_characteristic.csv (collective; rank 0 writes).
+    /// @p top/nip_characteristic.csv (collective; rank 0 writes); b/h with
+    /// the roll's @p cover_thickness h [mm] tells thick from thin covers.
     void
     write_nip_characteristic(const std::vector<NipRow> &rows,
                              const bool                 with_linear,
+                             const double               cover_thickness,
                              const std::string         &top)
     {
       const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
@@ -252,7 +254,8 @@ namespace rollnip
                      "bond_sigma_rr_min_MPa,bond_sigma_rtheta_max_MPa,"
                      "P_from_traction_N_per_mm,conformity,penetration,"
                      "P_linear_N_per_mm,u0_linear_mm,peak_pressure_linear_MPa,"
-                     "P_hertz_N_per_mm,P_thin_layer_N_per_mm\n"
+                     "P_hertz_N_per_mm,P_thin_layer_N_per_mm,"
+                     "half_chord_over_cover_thickness\n"
                   << std::setprecision(10);
               for (const auto &r : rows)
                 out << r.nonlinear.theta0 * deg << ',' << r.nonlinear.nip_load
@@ -267,7 +270,8 @@ namespace rollnip
                     << ',' << linear_value(r, r.linear.nip_load) << ','
                     << linear_value(r, r.linear.indentation) << ','
                     << linear_value(r, r.linear.peak_pressure) << ','
-                    << r.hertz_load << ',' << r.thin_layer_load << '\n';
+                    << r.hertz_load << ',' << r.thin_layer_load << ','
+                    << r.nonlinear.half_chord / cover_thickness << '\n';
             });
         }
     }
@@ -377,7 +381,11 @@ namespace rollnip
                  std::vector<NipRow>             *rows_out)
     {
       const std::string &top = parameters.output.directory;
-      write_nip_characteristic(rows, with_linear, top);
+      write_nip_characteristic(rows,
+                               with_linear,
+                               parameters.geometry.outer_radius -
+                                 parameters.geometry.inner_radius,
+                               top);
       write_nip_report(rows, parameters, top);
       if (rows_out)
         *rows_out = rows;

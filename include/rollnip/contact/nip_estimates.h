@@ -23,7 +23,13 @@ namespace rollnip
     double
     contact_modulus(const Parameters::AllParameters &p);
 
-    /// Sum over the deformable covers of h^3 / G [mm^3/MPa]: the thin
+    /// 3 int_0^h (h - s)^2 / G(s) ds [mm^3/MPa] of one cover, s from the
+    /// core out through its layers: h^3 / G for one layer.
+    double
+    layered_compliance(const Parameters::Geometry &geometry,
+                       const Parameters::Material &material);
+
+    /// Sum over the deformable covers of layered_compliance(): the thin
     /// bonded incompressible layer has P = 2 b^5 / (15 R sum h^3/G).
     double
     thin_layer_compliance(const Parameters::AllParameters &p);
