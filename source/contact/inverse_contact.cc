@@ -545,6 +545,8 @@ namespace rollnip
             << '\n'
             << "mating_roll_nip_load_P_N_per_mm = " << result.mate_nip_load
             << '\n'
+            << "mating_roll_P_from_traction_N_per_mm = "
+            << result.mate_load_from_traction << '\n'
             << "mating_roll_penetration_over_u0 = " << result.mate_penetration
             << '\n'
             << "two_roll_passes = " << result.outer_iterations << '\n';

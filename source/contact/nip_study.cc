@@ -84,18 +84,6 @@ namespace rollnip
     }
   } // namespace
 
-  double
-  load_from_traction(const std::vector<OuterSurfacePoint> &outer)
-  {
-    // On the outer arc (counter-clockwise) n ds = (dx2, -dx1), so
-    // P = 2 sum over segments of mean(-sigma_nn) dx2.
-    double P = 0;
-    for (unsigned int i = 1; i < outer.size(); ++i)
-      P += (outer[i].normal_pressure + outer[i - 1].normal_pressure) *
-           (outer[i].y - outer[i - 1].y);
-    return P; // 2 * (1/2 mean) * dx2
-  }
-
   namespace
   {
     /// Relative difference between P from the surface traction and the

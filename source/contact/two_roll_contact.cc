@@ -315,7 +315,12 @@ namespace rollnip
                          std::to_string(moved) + " u0)";
       }
     if (result.converged)
-      keep_converged(result, estimate);
+      {
+        // Equilibrium of the mating roll from its own stresses.
+        result.mate_load_from_traction =
+          load_from_traction(mate.surface_data(1.).outer);
+        keep_converged(result, estimate);
+      }
     else
       restore(last);
     return result;

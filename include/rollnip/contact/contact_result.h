@@ -31,6 +31,8 @@ namespace rollnip
     double       roll_indentation = 0; ///< of this roll's surface [mm]
     double       mate_indentation = 0; ///< of the mating roll's surface [mm]
     double       mate_nip_load    = 0; ///< P from the mating roll's load [N/mm]
+    /// P from the normal stress on the mating roll's surface [N/mm].
+    double       mate_load_from_traction = 0;
     double       mate_penetration = 0; ///< of its nodes into this roll, / u0
     unsigned int outer_iterations = 0; ///< of the two-roll iteration
   };

@@ -26,11 +26,6 @@ namespace rollnip
     unsigned int            n_cells = 0;
   };
 
-  /// The two-sided load P [N/mm] from the normal Cauchy traction -sigma_nn
-  /// on the deformed outer surface (the check of the applied P).
-  double
-  load_from_traction(const std::vector<OuterSurfacePoint> &outer);
-
   /// The contact solver of the scene: InverseContact against the rigid
   /// indenter, or TwoRollContact against a covered mating roll.
   std::unique_ptr<NipSolver>

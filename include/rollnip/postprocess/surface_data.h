@@ -64,6 +64,20 @@ namespace rollnip
     return e;
   }
 
+  /// The two-sided load P [N/mm] from the normal Cauchy traction -sigma_nn
+  /// on the deformed outer surface (the check of the applied P): on the
+  /// outer arc, counter-clockwise, n ds = (dx2, -dx1), so P is twice the
+  /// integral of -sigma_nn dx2 (0 for no points).
+  inline double
+  load_from_traction(const std::vector<OuterSurfacePoint> &outer)
+  {
+    double P = 0;
+    for (unsigned int i = 1; i < outer.size(); ++i)
+      P += (outer[i].normal_pressure + outer[i - 1].normal_pressure) *
+           (outer[i].y - outer[i - 1].y);
+    return P; // 2 * (1/2 mean) * dx2
+  }
+
   /// Cell-wide extremes over the whole cover.
   struct FieldExtremes
   {
