@@ -303,10 +303,14 @@ namespace rollnip
       const std::string meaning = sweep_time_meaning(parameters);
       SweepPvd          pvd(top + "/solution_sweep.pvd", meaning);
       SweepPvd          linear_pvd(top + "/solution_sweep_linear.pvd", meaning);
-      const bool        series = sweep && parameters.output.write_vtu;
+      // A single nip is a sweep of one: its PVD holds the indenter and the
+      // contact pressure beside the cover, which its solution.pvd does not.
+      const bool series = parameters.output.write_vtu;
       for (unsigned int n = 0; n < values.size(); ++n)
         {
-          const std::string nip = "nip-" + Utilities::int_to_string(n + 1, 2);
+          // The nip's directory, relative to the PVD's and from the cwd.
+          const std::string nip =
+            sweep ? "nip-" + Utilities::int_to_string(n + 1, 2) : ".";
           const std::string dir = sweep ? top + "/" + nip : top;
           const std::string vtu =
             "/solution-" + Utilities::int_to_string(n + 1, 4) + ".pvtu";

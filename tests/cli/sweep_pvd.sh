@@ -9,7 +9,7 @@
 # tensors (ParaView's tensor filters need them whole). Each nip of the
 # nonlinear sweep also has the indenter outline (part 1) and the contact
 # pressure along the deformed surface (part 2) as polylines; a two-roll
-# sweep has the mating roll as part 1.
+# sweep has the mating roll as part 1, and a single nip is a sweep of one.
 #
 # Usage: bash sweep_pvd.sh ROLLNIP
 set -euo pipefail
@@ -128,3 +128,36 @@ print(f"  two/solution_sweep.pvd: {parts}")
 sys.exit(0 if ok else 1)
 PY
 pass "a two-roll sweep: the mating roll is part 1 and the contact pressure part 2 of every nip"
+
+# A single nip is a sweep of one: the same three parts, paths relative to
+# the output directory itself.
+cat > one.prm <<PRM
+subsection Mesh
+  set Radial cells = 4
+  set Circumferential cells = 16
+end
+subsection Contact
+  set Mode = nip angle
+  set Values = 6
+  set Compare with linear theory = true
+end
+subsection Output
+  set Directory = one
+end
+PRM
+rc=0
+"$rollnip" one.prm > stdout3.txt 2> stderr3.txt || rc=$?
+[ "$rc" -eq 0 ] || { cat stderr3.txt; fail "exit code $rc"; }
+python3 - <<'PY' || fail "a single nip's PVD is not what ParaView needs"
+import os, sys, xml.etree.ElementTree as ET
+ok = True
+for name, want in [("one/solution_sweep.pvd", ["0", "1", "2"]),
+                   ("one/solution_sweep_linear.pvd", ["0"])]:
+    parts = [(float(d.get("timestep")), d.get("part"), d.get("file"))
+             for d in ET.parse(name).iter("DataSet")]
+    print(f"  {name}: {parts}")
+    ok &= [p[1] for p in parts] == want and all(p[0] == 6 for p in parts) and \
+          all(os.path.isfile(os.path.join("one", p[2])) for p in parts)
+sys.exit(0 if ok else 1)
+PY
+pass "a single nip: solution_sweep.pvd holds the cover, the indenter and the pressure at theta0 = 6, and the linear companion has its own"
