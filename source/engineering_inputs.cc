@@ -188,12 +188,11 @@ namespace rollnip
       const std::size_t         n_layers =
         std::max<std::size_t>(1, material.layer_thicknesses.size());
       AssertThrow(readings.size() == n_layers,
-                  ExcMessage("Material/Hardness has " +
-                             std::to_string(readings.size()) +
-                             " value(s) but the cover has " +
-                             std::to_string(n_layers) +
-                             " layer(s) (Material/Layer thicknesses): give "
-                             "one hardness per layer, from the core out"));
+                  ExcMessage(
+                    "Material/Hardness has " + std::to_string(readings.size()) +
+                    " value(s) but the cover has " + std::to_string(n_layers) +
+                    " layer(s) (Material/Layer thicknesses): give "
+                    "one hardness per layer, from the core out"));
       const double ratio = prm.get_double("C2/C1 ratio");
       material.layer_C1.clear();
       material.layer_C2.clear();
@@ -206,8 +205,8 @@ namespace rollnip
           material.layer_C2.push_back(c.C2);
           // The surface layer's modulus is the one the nip report quotes.
           material.hardness_modulus = E;
-          readings_text += (readings_text.empty() ? "" : ", ") +
-                           Parameters::number(value);
+          readings_text +=
+            (readings_text.empty() ? "" : ", ") + Parameters::number(value);
         }
       material.hardness_description =
         readings_text + " " + Hardness::to_string(scale) +
@@ -320,7 +319,7 @@ namespace rollnip
       if (c.mode == Parameters::ContactMode::load && c.load_unit.name != "N/mm")
         {
           s << (c.load_unit.is_total_force() ? "Contact: total forces"
-                                              : "Contact: line loads");
+                                             : "Contact: line loads");
           for (unsigned int i = 0; i < c.values.size(); ++i)
             s << (i ? ", " : " ") << c.values[i] / c.load_unit.to_n_per_mm
               << ' ' << c.load_unit.name << " = " << c.values[i] << " N/mm";

@@ -137,6 +137,12 @@ namespace rollnip
       log_steps = on;
     }
 
+    MPI_Comm
+    communicator() const override
+    {
+      return mpi_communicator;
+    }
+
     SurfaceData
     surface_data(const double load_fraction) const;
     Tensor<1, dim>

@@ -70,7 +70,8 @@ namespace rollnip
       : body(body)
       , parameters(parameters)
       , counter_surface(std::move(counter_surface))
-      , pcout(std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      , pcout(std::cout,
+              Utilities::MPI::this_mpi_process(body.communicator()) == 0)
       , conformity_tolerance(
           parameters.contact.mode == Parameters::ContactMode::nip_angle
             ? parameters.contact.tolerance
@@ -316,8 +317,9 @@ namespace rollnip
         applied_pressure = iterate.accepted_pressure;
         iterate.f_from   = iterate.accepted_a;
         for (unsigned int k = 0; k < zone.m; ++k)
-          iterate.a[k] = iterate.accepted_a[k] +
-                         0.5 * (iterate.a[k] - iterate.accepted_a[k]);
+          iterate.a[k] =
+            iterate.accepted_a[k] + IterationControls::halving_factor *
+                                      (iterate.a[k] - iterate.accepted_a[k]);
         retry = true;
         return "";
       }

@@ -4,6 +4,7 @@
 #include <rollnip/contact/nip_estimates.h>
 #include <rollnip/interrupt.h>
 #include <rollnip/material/material_table.h>
+#include <rollnip/solvers/iteration_controls.h>
 
 #include <algorithm>
 #include <cmath>
@@ -17,17 +18,6 @@ namespace rollnip
   {
     constexpr double deg = 180. / numbers::PI;
 
-    /// Slopes of log q against log theta0 allowed to the secant: P rises
-    /// like theta0^2 (Hertz) to theta0^5 (thin layer), u0 like theta0^2;
-    /// the bounds only catch a secant through two nearly equal points.
-    constexpr double min_slope = 0.5, max_slope = 10.;
-    /// The slope assumed while one nip has converged: between Hertz and
-    /// the thin layer for P, the geometric overlap for u0.
-    constexpr double default_slope_load = 3., default_slope_indentation = 2.;
-
-    /// A theta0 this close above a converged one that still fails means
-    /// the cover cannot carry more.
-    constexpr double step_back_resolution = 1e-2;
   } // namespace
 
   NipControl::NipControl(NipSolver &contact, const Parameters::AllParameters &p)
@@ -59,11 +49,11 @@ namespace rollnip
           std::pow(7.5 * R * NipEstimates::thin_layer_compliance(parameters) *
                      target,
                    0.2);
-        b = 0.7 * std::min(b_hertz, b_thin);
+        b = IterationControls::first_guess_fraction * std::min(b_hertz, b_thin);
       }
     else
       b = std::sqrt(2 * R * target); // the chord of the geometric overlap
-    return std::asin(std::min(b / R0, 0.9));
+    return std::asin(std::min(b / R0, IterationControls::max_first_guess_sine));
   }
 
   std::vector<NipControl::Point>
@@ -83,14 +73,17 @@ namespace rollnip
     Assert(!converged.empty(), ExcInternalError());
     const std::vector<Point> near = nearest_first(target);
     const double             default_slope =
-      by_load ? default_slope_load : default_slope_indentation;
+      by_load ? IterationControls::default_slope_load
+                          : IterationControls::default_slope_indentation;
     double slope = default_slope;
     if (near.size() > 1 && near[0].theta != near[1].theta)
       slope = std::log(near[0].q / near[1].q) /
               std::log(near[0].theta / near[1].theta);
     if (!std::isfinite(slope))
       slope = default_slope;
-    slope = std::clamp(slope, min_slope, max_slope);
+    slope = std::clamp(slope,
+                       IterationControls::min_slope,
+                       IterationControls::max_slope);
     return near[0].theta * std::pow(target / near[0].q, 1. / slope);
   }
 
@@ -106,7 +99,8 @@ namespace rollnip
     std::vector<Point> nodes = {near[0]};
     for (std::size_t i = 1; i < near.size() && nodes.size() < 3; ++i)
       if (std::all_of(nodes.begin(), nodes.end(), [&](const Point &n) {
-            return std::abs(std::log(near[i].q / n.q)) > 0.3 * reach;
+            return std::abs(std::log(near[i].q / n.q)) >
+                   IterationControls::node_spread * reach;
           }))
         nodes.push_back(near[i]);
     if (nodes.size() < 3)
@@ -126,8 +120,9 @@ namespace rollnip
     const double theta = std::exp(log_t);
     // Far outside its nodes a quadratic may turn over: then the power law.
     const double power_law = secant_guess(target);
-    return std::isfinite(theta) && theta > 0.5 * power_law &&
-               theta < 2 * power_law
+    const double f         = IterationControls::max_step_factor;
+    return std::isfinite(theta) && theta > power_law / f &&
+               theta < f * power_law
              ? theta
              : power_law;
   }
@@ -145,7 +140,8 @@ namespace rollnip
         lo = std::max(lo, p.theta);
       else
         hi = std::min(hi, p.theta);
-    double next = std::clamp(predict(target), 0.5 * theta, 2 * theta);
+    const double f    = IterationControls::max_step_factor;
+    double       next = std::clamp(predict(target), theta / f, f * theta);
     if (!(next > lo && next < hi))
       next = lo > 0 ? 0.5 * (lo + hi) : 0.5 * hi;
     return std::min(next, upper);
@@ -232,9 +228,9 @@ namespace rollnip
         ++n_solves;
         return contact.solve(target);
       }
+    const MPI_Comm     comm = contact.communicator();
     ConditionalOStream pcout(std::cout,
-                             Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) ==
-                               0);
+                             Utilities::MPI::this_mpi_process(comm) == 0);
     const double       theta_max = contact.max_nip_angle();
 
     double theta = converged.empty() ? first_guess(target) : predict(target);
@@ -243,7 +239,7 @@ namespace rollnip
     ContactResult r;
     for (unsigned int it = 1; it <= c.max_iterations; ++it)
       {
-        if (it > 1 && interrupt_requested(MPI_COMM_WORLD))
+        if (it > 1 && interrupt_requested(comm))
           {
             r.converged = false;
             r.message   = interrupt_message();
@@ -255,7 +251,7 @@ namespace rollnip
           {
             const double below = converged_below(theta);
             failed_at          = std::min(failed_at, theta);
-            if (theta - below < step_back_resolution * theta)
+            if (theta - below < IterationControls::step_back_resolution * theta)
               return refuse(r,
                             target,
                             "the contact iteration fails for every theta0 "

@@ -56,10 +56,9 @@ namespace rollnip
     thin_layer_compliance(const Parameters::AllParameters &p)
     {
       return layered_compliance(p.geometry, p.material) +
-             (p.mating_roll.covered ?
-                layered_compliance(p.mating_roll.geometry,
-                                   p.mating_roll.material) :
-                0.);
+             (p.mating_roll.covered ? layered_compliance(p.mating_roll.geometry,
+                                                         p.mating_roll.material)
+                                    : 0.);
     }
 
     double

@@ -30,7 +30,8 @@ namespace rollnip
               }
     // Keyed by the angle: a vertex shared by two faces or two ranks once.
     std::map<long long, SurfaceNode> unique;
-    for (const auto &part : Utilities::MPI::all_gather(MPI_COMM_WORLD, flat))
+    for (const auto &part :
+         Utilities::MPI::all_gather(dofs.get_communicator(), flat))
       for (std::size_t i = 0; i < part.size(); i += 5)
         unique[std::llround(part[i] * 1e9)] =
           SurfaceNode{part[i],
@@ -53,7 +54,7 @@ namespace rollnip
       for (unsigned int d = 0; d < dim; ++d)
         if (owned.is_element(nodes[i].dof[d]))
           values[dim * i + d] = v[nodes[i].dof[d]];
-    Utilities::MPI::sum(values, MPI_COMM_WORLD, values);
+    Utilities::MPI::sum(values, v.get_mpi_communicator(), values);
     std::vector<Tensor<1, dim>> u(nodes.size());
     for (unsigned int i = 0; i < nodes.size(); ++i)
       for (unsigned int d = 0; d < dim; ++d)

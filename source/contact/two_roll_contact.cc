@@ -70,7 +70,8 @@ namespace rollnip
     {
       const double R0 = p.geometry.outer_radius;
       const double Rm = p.mating_roll.geometry.outer_radius;
-      return std::asin(std::min(0.95, R0 * std::sin(theta0) / Rm));
+      return std::asin(
+        std::min(IterationControls::max_mate_sine, R0 * std::sin(theta0) / Rm));
     }
   } // namespace
 
@@ -79,12 +80,13 @@ namespace rollnip
       : parameters(parameters)
       , mate_parameters(parameters.mating_roll_parameters())
       , roll(roll)
-      , mate(mate_parameters, MPI_COMM_WORLD)
+      , mate(mate_parameters, roll.communicator())
       , mate_surface(std::make_shared<DeformedRoll>(
           parameters.geometry.outer_radius,
           parameters.mating_roll.geometry.outer_radius))
       , contact(roll, parameters, mate_surface)
-      , pcout(std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      , pcout(std::cout,
+              Utilities::MPI::this_mpi_process(roll.communicator()) == 0)
   {
     mate.setup();
     mate.set_step_log(false);

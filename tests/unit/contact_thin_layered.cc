@@ -80,8 +80,8 @@ namespace
           return 2 * G * std::pow(a, 5) / (15 * R_effective * H * H * H);
         };
         const std::string at = "G1 = " + testing::num(G1) +
-                               ", G2 = " + testing::num(G2) +
-                               " MPa, top " + testing::num(t) +
+                               ", G2 = " + testing::num(G2) + " MPa, top " +
+                               testing::num(t) +
                                " mm, a/H = " + testing::num(a / H) + ": ";
         checker.check(r.converged && r.conformity < 1e-6,
                       at + "converged, conformity " +

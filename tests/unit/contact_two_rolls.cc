@@ -71,13 +71,12 @@ namespace
     // The stress-based P carries the discretisation error of the surface
     // stresses (measured 0.07 to 0.69 % on these level-1 meshes); 1 %
     // catches a wrong load transfer, not the mesh.
-    checker.check(relative(r.mate_load_from_traction, r.nip_load) < 1e-2,
-                  "P from the mating roll's surface stress " +
-                    testing::num(r.mate_load_from_traction) +
-                    " N/mm = P within 1 % (" +
-                    testing::num(
-                      100 * relative(r.mate_load_from_traction, r.nip_load)) +
-                    " %)");
+    checker.check(
+      relative(r.mate_load_from_traction, r.nip_load) < 1e-2,
+      "P from the mating roll's surface stress " +
+        testing::num(r.mate_load_from_traction) + " N/mm = P within 1 % (" +
+        testing::num(100 * relative(r.mate_load_from_traction, r.nip_load)) +
+        " %)");
     checker.check(r.penetration < 1e-4 && r.mate_penetration < 1e-4,
                   "no penetration outside the zone (" +
                     testing::num(r.penetration) + ", " +
@@ -147,7 +146,7 @@ namespace
         RollProblem roll(p, MPI_COMM_WORLD);
         roll.setup();
         TwoRollContact      contact(roll, p);
-        const ContactResult r = solve_controlled_nip(contact, p, target);
+        const ContactResult r      = solve_controlled_nip(contact, p, target);
         const double        dtheta = r.theta0 / reference.theta0 - 1;
         std::cout << "  " << mode << " " << target << ": theta0 "
                   << r.theta0 / deg << " deg, P " << r.nip_load
@@ -158,8 +157,9 @@ namespace
         checker.check(r.converged && std::abs(dtheta) < 1e-4 &&
                         relative(r.nip_load, reference.nip_load) < 1e-4 &&
                         relative(r.indentation, reference.indentation) < 1e-4,
-                      mode + " control of two rolls reaches the 7 deg nip: "
-                             "theta0 off by " +
+                      mode +
+                        " control of two rolls reaches the 7 deg nip: "
+                        "theta0 off by " +
                         testing::num(dtheta) + ", P and approach within 1e-4");
         check_equilibrium(checker, r);
       }
@@ -245,8 +245,7 @@ main(int argc, char **argv)
   std::cout << "Two identical rolls against a roll on a rigid plane"
             << std::endl;
   identical_rolls(checker);
-  std::cout << "Load and approach control of two dissimilar rolls"
-            << std::endl;
+  std::cout << "Load and approach control of two dissimilar rolls" << std::endl;
   controlled(checker);
   std::cout << "A 1000x stiffer mating cover against the rigid cylinder"
             << std::endl;

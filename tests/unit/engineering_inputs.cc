@@ -85,7 +85,7 @@ namespace
     const auto p = testing::parameters_from_string(
       "subsection Material\n set Layer thicknesses = 3, 10.5\n"
       " set Hardness = 90, 60\n set C2/C1 ratio = 0.25\nend\n");
-    const auto  &m = p.material;
+    const auto  &m      = p.material;
     const double E_base = Hardness::youngs_modulus_from_shore_a(90);
     const double E_top  = Hardness::youngs_modulus_from_shore_a(60);
     auto         close  = [](const double a, const double b) {
@@ -150,11 +150,10 @@ main(int argc, char **argv)
                 pli + " pli: P = " + testing::num(by_pli.nip_load) +
                   " N/mm, the same nip (difference " +
                   testing::num(difference(by_pli, base)) + " < 1e-5)");
-  const ContactResult by_force =
-    solve(radii + hardness +
-          "subsection Contact\n set Mode = load\n " + radius +
-          "\n set Load unit = kN\n set Face length = 5000\n"
-          " set Values = 200\nend\n");
+  const ContactResult by_force = solve(
+    radii + hardness + "subsection Contact\n set Mode = load\n " + radius +
+    "\n set Load unit = kN\n set Face length = 5000\n"
+    " set Values = 200\nend\n");
   checker.check(by_force.converged && difference(by_force, base) < 1e-12,
                 "200 kN on a 5000 mm face: the same nip (difference " +
                   testing::num(difference(by_force, base)) + ")");

@@ -83,23 +83,26 @@ namespace
   /// the error of the interface sigma_rr (mean over its nodes) / q, of the
   /// tube under @p q inside (or outside, if @p external).
   std::pair<double, double>
-  tube_errors(double q, const bool external, const unsigned int level,
-              testing::Checker &checker)
+  tube_errors(double             q,
+              const bool         external,
+              const unsigned int level,
+              testing::Checker  &checker)
   {
-    const auto  p = testing::parameters_from_string(tube_prm(q, external, level));
+    const auto p =
+      testing::parameters_from_string(tube_prm(q, external, level));
     RollProblem problem(p, MPI_COMM_WORLD);
     problem.setup();
     checker.check(problem.run().converged,
                   "converged at q = " + testing::num(q));
     // The pressure as the program read it (num() rounds to 4 digits).
-    q              = p.load.p0;
-    const double q_inner = external ? 0 : q;
-    const double c  = c_of_pressure(external ? -q : q);
-    const double ea = std::sqrt(R1 * R1 + c) - R1;
-    const double eb = std::sqrt(R0 * R0 + c) - R0;
-    const double fa = problem.radial_displacement_at(Point<dim>(R1, 0));
-    const double fb = problem.radial_displacement_at(Point<dim>(R0, 0));
-    const double e = std::max(std::abs(fa - ea) / std::abs(ea),
+    q                         = p.load.p0;
+    const double      q_inner = external ? 0 : q;
+    const double      c       = c_of_pressure(external ? -q : q);
+    const double      ea      = std::sqrt(R1 * R1 + c) - R1;
+    const double      eb      = std::sqrt(R0 * R0 + c) - R0;
+    const double      fa   = problem.radial_displacement_at(Point<dim>(R1, 0));
+    const double      fb   = problem.radial_displacement_at(Point<dim>(R0, 0));
+    const double      e    = std::max(std::abs(fa - ea) / std::abs(ea),
                               std::abs(fb - eb) / std::abs(eb));
     const SurfaceData data = problem.surface_data(1.);
     const double      exact_rr =

@@ -78,6 +78,11 @@ namespace rollnip
     /// Whether each solve logs its load steps (off inside iterations).
     virtual void
     set_step_log(const bool on) = 0;
+
+    /// The processes that hold the body: every collective call of the
+    /// contact iteration runs on them.
+    virtual MPI_Comm
+    communicator() const = 0;
   };
 } // namespace rollnip
 

@@ -27,10 +27,10 @@ namespace rollnip
 
     /// Against a covered mating roll (TwoRollContact); indentation is then
     /// the approach of the two centres.
-    bool         two_rolls        = false;
-    double       roll_indentation = 0; ///< of this roll's surface [mm]
-    double       mate_indentation = 0; ///< of the mating roll's surface [mm]
-    double       mate_nip_load    = 0; ///< P from the mating roll's load [N/mm]
+    bool   two_rolls        = false;
+    double roll_indentation = 0; ///< of this roll's surface [mm]
+    double mate_indentation = 0; ///< of the mating roll's surface [mm]
+    double mate_nip_load    = 0; ///< P from the mating roll's load [N/mm]
     /// P from the normal stress on the mating roll's surface [N/mm].
     double       mate_load_from_traction = 0;
     double       mate_penetration = 0; ///< of its nodes into this roll, / u0

@@ -48,6 +48,12 @@ namespace rollnip
     double
     max_nip_angle() override;
 
+    MPI_Comm
+    communicator() const override
+    {
+      return body.communicator();
+    }
+
     /// The state, pressure and theta0 of a converged nip.
     struct Converged
     {

@@ -1,6 +1,8 @@
 #ifndef rollnip_contact_nip_solver_h
 #define rollnip_contact_nip_solver_h
 
+#include <deal.II/base/mpi.h>
+
 #include <rollnip/contact/contact_result.h>
 
 #include <string>
@@ -26,6 +28,10 @@ namespace rollnip
     /// The largest theta0 [rad] the roll's mesh takes.
     virtual double
     max_nip_angle() = 0;
+
+    /// The processes that solve the nip (the roll's).
+    virtual MPI_Comm
+    communicator() const = 0;
 
     /// Writes what this solver adds to the roll's results of nip @p step in
     /// @p directory (collective); nothing for a rigid counter surface.

@@ -46,6 +46,12 @@ namespace rollnip
       return contact.max_nip_angle();
     }
 
+    MPI_Comm
+    communicator() const override
+    {
+      return contact.communicator();
+    }
+
     /// The mating roll's files in @p directory/mating_roll.
     void
     write_results(const ContactResult &result,

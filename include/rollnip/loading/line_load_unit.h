@@ -16,7 +16,7 @@ namespace rollnip
     /// As in the parameter file: N/mm, kN/m, pli, or N or kN (a total
     /// force over the face length).
     std::string name;
-    double      to_n_per_mm; ///< one of this unit in N/mm of line load
+    double      to_n_per_mm;     ///< one of this unit in N/mm of line load
     double      face_length = 0; ///< [mm] of a total force, else 0
 
     /// The unit named @p name; a total force (N, kN) needs the loaded

@@ -51,7 +51,37 @@ namespace rollnip
     /// A surface node within this relative distance of theta0 is the edge.
     constexpr double edge_slack = 1e-12;
 
+    /// A contact update whose conformity residual grew is cut by this
+    /// factor towards the last accepted one.
+    constexpr double halving_factor = 0.5;
+
+    // Load and indentation control (nip_control.cc)
+    /// Slopes of log q against log theta0 allowed to the secant: P rises
+    /// like theta0^2 (Hertz) to theta0^5 (thin layer), u0 like theta0^2;
+    /// the bounds only catch a secant through two nearly equal points.
+    constexpr double min_slope = 0.5, max_slope = 10.;
+    /// The slope assumed while one nip has converged: between Hertz and
+    /// the thin layer for P, the geometric overlap for u0.
+    constexpr double default_slope_load = 3., default_slope_indentation = 2.;
+    /// The first nip of a load target is this fraction of the smaller of
+    /// the Hertz and thin-layer widths (both too wide for a finite cover).
+    constexpr double first_guess_fraction = 0.7;
+    /// The first guess keeps sin(theta0) below this (the nip stays on the
+    /// front of the roll).
+    constexpr double max_first_guess_sine = 0.9;
+    /// A nip joins the interpolation nodes only if its q differs from the
+    /// nodes' by this fraction of the log-distance to the target.
+    constexpr double node_spread = 0.3;
+    /// One step of theta0 at most multiplies or divides it by this factor;
+    /// the inverse quadratic beyond it is replaced by the power law.
+    constexpr double max_step_factor = 2.;
+    /// A theta0 this close (relative) above a converged one that still
+    /// fails means the cover cannot carry more.
+    constexpr double step_back_resolution = 1e-2;
+
     // Two covered rolls (two_roll_contact.cc)
+    /// The mating roll's first nip angle keeps its sine below this.
+    constexpr double max_mate_sine = 0.95;
     /// The passes end when the mating surface moves less than this many
     /// times the contact iteration's conformity tolerance (times u0): below
     /// it, the change is the inner iterations' own noise.
