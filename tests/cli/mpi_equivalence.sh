@@ -5,6 +5,8 @@
 #   PRM     a shipped scene: parameters/parabolic_pressure.prm (the paper's
 #           pressure scene) or a contact scene such as
 #           parameters/load_controlled.prm (nip-fitted mesh, load control)
+#           or parameters/two_rolls.prm (two covered rolls: the mating
+#           roll gets the same small mesh and its files are compared too)
 #   METHOD  Linear solver/Method: direct (default) or gmres-amg
 #
 # Runs the scene of PRM on a smaller mesh (the overrides are appended to a
@@ -62,6 +64,18 @@ subsection Linear solver
   set Method = $method
 end
 PRM
+  # A covered mating roll gets the same small mesh.
+  if grep -q "^subsection Mating roll" "$scene"; then
+    cat >> "$1" <<PRM
+subsection Mating roll
+  subsection Mesh
+    set Radial cells          = 3
+    set Circumferential cells = 16
+    set Global refinements    = 0
+  end
+end
+PRM
+  fi
 }
 make_prm serial.prm out_serial
 make_prm parallel.prm out_parallel
@@ -114,10 +128,18 @@ for r in "${results[@]}"; do
 done
 pass "status = converged (${#results[@]} result(s))"
 
-# Everything except the timings and the process count must agree.
+# Everything except the timings and the process count must agree, and the
+# work counters: the sums of two partitions differ in round-off, which can
+# move an inner stopping test by one iteration (two rolls: 339 against 331
+# assemblies, with every result within 1e-8).
+# A covered mating roll's results sit in mating_roll/ of every nip.
+if [ -d "out_serial/${results[0]}/mating_roll" ]; then
+  n=${#results[@]}
+  for ((i = 0; i < n; ++i)); do results+=("${results[$i]}/mating_roll"); done
+fi
 for dir in out_serial out_parallel; do
   for r in "${results[@]}"; do
-    grep -v -E '^([a-z_]*wall_time_s|time_[a-z_]*_s|mpi_processes|threads|gmres_iterations|gmres_solves) =' \
+    grep -v -E '^([a-z_]*wall_time_s|time_[a-z_]*_s|mpi_processes|threads|gmres_iterations|gmres_solves|assemblies|linear_solves) =' \
       "$dir/$r/summary.txt" > "$dir/$r/summary_compared.txt"
   done
 done
@@ -137,7 +159,9 @@ for r in "${results[@]}"; do
   compare "$r/summary_compared.txt"
   compare "$r/outer_surface.csv"
   compare "$r/bond_surface.csv"
-  if [ "$r" != . ]; then compare "$r/contact_pressure.csv"; fi
+  if [ "$r" != . ] && [ -f "out_serial/$r/contact_pressure.csv" ]; then
+    compare "$r/contact_pressure.csv"
+  fi
 done
 if [ "$first" != . ]; then compare nip_characteristic.csv; fi
 for r in "${results[@]}"; do
