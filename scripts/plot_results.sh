@@ -523,9 +523,14 @@ fi
 # ------------------------------------------------------- f. the nip report
 report="$outdir/nip_report.csv"
 if [ -f "$report" ] && [ "$(grep -c . "$report")" -ge 2 ]; then
-  # The load column names its unit: line_load_kN_per_m, ..._N_per_mm, ..._pli.
+  # The load column names its unit: line_load_kN_per_m, ..._N_per_mm, ..._pli,
+  # or a total force on the face length, total_force_N or total_force_kN.
   load_name="$(head -n 1 "$report" | cut -d, -f2)"
-  unit="$(printf '%s' "${load_name#line_load_}" | sed 's/_per_/\//')"
+  if [[ "$load_name" == total_force_* ]]; then
+    load_label="total force (${load_name#total_force_})"
+  else
+    load_label="line load ($(printf '%s' "${load_name#line_load_}" | sed 's/_per_/\//'))"
+  fi
   cw="$(column_of "$report" nip_width_2b_mm)"
   cpk="$(column_of "$report" peak_pressure_MPa)"
   cmn="$(column_of "$report" mean_pressure_MPa)"
@@ -534,7 +539,7 @@ if [ -f "$report" ] && [ "$(grep -c . "$report")" -ge 2 ]; then
   fq="$(gq "$report")"
   render nip_report 900 620 <<EOF
 set title 'Nip report: nip width and pressure against line load'
-set xlabel 'line load ($unit)'
+set xlabel '$load_label'
 set ylabel 'nip width 2b, deformed (mm)'
 set y2label 'pressure (MPa)'
 set xrange [0:*]
