@@ -58,6 +58,13 @@ namespace rollnip
                       : ", from C1 and C2");
       if (dwell)
         std::cout << "; surface speed " << c.surface_speed << " m/min";
+      if (p.mating_roll.covered)
+        std::cout << "; mating roll E = "
+                  << 3 * surface_shear_modulus(p.mating_roll.material) << " MPa"
+                  << (p.mating_roll.material.hardness_modulus > 0
+                        ? ", an estimate from hardness " +
+                            p.mating_roll.material.hardness_description
+                        : ", from C1 and C2");
       if (c.load_unit.is_total_force())
         std::cout << "; total force on a face of " << c.load_unit.face_length
                   << " mm";
@@ -86,12 +93,21 @@ namespace rollnip
       const double E        = 3 * surface_shear_modulus(p.material);
       const bool   dwell    = c.surface_speed > 0;
       const bool   estimate = p.material.hardness_modulus > 0;
+      // A covered mating roll: its modulus beside the roll's.
+      const bool   two_rolls = p.mating_roll.covered;
+      const double E_mate =
+        two_rolls ? 3 * surface_shear_modulus(p.mating_roll.material) : 0;
+      const bool mate_estimate = p.mating_roll.material.hardness_modulus > 0;
       write_atomically(file, [&](std::ostream &out) {
         out << "nip," << c.load_unit.column_name()
             << ",line_load_N_per_mm,nip_width_2b_mm,indentation_u0_mm,"
                "peak_pressure_MPa,mean_pressure_MPa,"
             << (dwell ? "surface_speed_m_per_min,dwell_time_ms," : "")
-            << "youngs_modulus_E_MPa,E_estimated_from_hardness\n"
+            << "youngs_modulus_E_MPa,E_estimated_from_hardness"
+            << (two_rolls ? ",mating_roll_youngs_modulus_E_MPa,"
+                            "mating_roll_E_estimated_from_hardness"
+                          : "")
+            << '\n'
             << std::setprecision(10);
         for (unsigned int i = 0; i < rows.size(); ++i)
           {
@@ -101,7 +117,10 @@ namespace rollnip
                 << ',';
             if (dwell)
               out << c.surface_speed << ',' << r.dwell << ',';
-            out << E << ',' << (estimate ? "yes" : "no") << '\n';
+            out << E << ',' << (estimate ? "yes" : "no");
+            if (two_rolls)
+              out << ',' << E_mate << ',' << (mate_estimate ? "yes" : "no");
+            out << '\n';
           }
       });
     }
