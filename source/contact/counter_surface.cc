@@ -42,6 +42,22 @@ namespace rollnip
     return gap_gradient(x, u0)[0];
   }
 
+  std::vector<Point<dim>>
+  RigidCircle::outline(const double       u0,
+                       const double       half_width,
+                       const unsigned int n) const
+  {
+    std::vector<Point<dim>> points;
+    for (unsigned int i = 0; i <= n; ++i)
+      {
+        const double y = half_width * i / n;
+        points.emplace_back(centre(u0)[0] -
+                              std::sqrt(std::max(0., Rbar * Rbar - y * y)),
+                            y);
+      }
+    return points;
+  }
+
   FlatPlane::FlatPlane(const double outer_radius)
       : R0(outer_radius)
   {}
@@ -68,6 +84,17 @@ namespace rollnip
   FlatPlane::radius() const
   {
     return std::numeric_limits<double>::infinity();
+  }
+
+  std::vector<Point<dim>>
+  FlatPlane::outline(const double       u0,
+                     const double       half_width,
+                     const unsigned int n) const
+  {
+    std::vector<Point<dim>> points;
+    for (unsigned int i = 0; i <= n; ++i)
+      points.emplace_back(R0 - u0, half_width * i / n);
+    return points;
   }
 
   DeformedRoll::DeformedRoll(const double outer_radius, const double radius)
@@ -147,6 +174,21 @@ namespace rollnip
   {
     // d y1 / d u0 = d D / d u0 = -1.
     return -gap_gradient_y(mate_point(x, u0))[0];
+  }
+
+  std::vector<Point<dim>>
+  DeformedRoll::outline(const double u0,
+                        const double half_width,
+                        const unsigned int) const
+  {
+    // y = (D - x1, -x2): the mirrored half x2 >= 0 of the nodes.
+    const double            D = R0 - u0 + rho.front();
+    std::vector<Point<dim>> points;
+    for (std::size_t i = 0; i < phi.size(); ++i)
+      if (rho[i] * std::sin(phi[i]) <= half_width)
+        points.emplace_back(D - rho[i] * std::cos(phi[i]),
+                            rho[i] * std::sin(phi[i]));
+    return points;
   }
 
   std::unique_ptr<CounterSurface>

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <rollnip/boundary_ids.h>
+#include <rollnip/contact/counter_surface.h>
 #include <rollnip/contact/nip_control.h>
 #include <rollnip/contact/nip_estimates.h>
 #include <rollnip/contact/nip_report.h>
@@ -27,24 +28,16 @@ namespace rollnip
   {
     constexpr double deg = 180. / numbers::PI;
 
-    /// Points of the indenter outline near the nip (deformed configuration).
+    /// Points of the indenter outline near the nip (deformed configuration),
+    /// out to three half-chords.
     std::vector<Point<dim>>
     indenter_outline(const Parameters::AllParameters &p, const ContactResult &r)
     {
-      const double R0    = p.geometry.outer_radius;
-      const double Rb    = p.contact.indenter_radius;
-      const double y_max = std::min(3 * std::max(r.half_chord, 1e-3), R0);
-      std::vector<Point<dim>> points;
-      for (unsigned int i = 0; i <= 200; ++i)
-        {
-          const double y = y_max * i / 200.;
-          const double x = std::isfinite(Rb)
-                             ? R0 + Rb - r.indentation -
-                                 std::sqrt(std::max(0., Rb * Rb - y * y))
-                             : R0 - r.indentation;
-          points.emplace_back(x, y);
-        }
-      return points;
+      const double R0 = p.geometry.outer_radius;
+      return make_counter_surface(R0, p.contact.indenter_radius)
+        ->outline(r.indentation,
+                  std::min(3 * std::max(r.half_chord, 1e-3), R0),
+                  200);
     }
 
     /// The nip's pieces that are not cells of the mesh (collective, rank 0

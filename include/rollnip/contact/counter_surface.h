@@ -16,7 +16,8 @@ namespace rollnip
    * against: a signed gap and its derivatives, as functions of a point x of
    * the deformed cover and of the approach u0 of the two bodies along the
    * line of centres (the X1 axis). A new counter surface implements these
-   * three functions and its effective radius; nothing else changes.
+   * three functions, its effective radius and its outline for the output,
+   * and make_counter_surface() picks it; nothing else changes.
    */
   class CounterSurface
   {
@@ -39,6 +40,14 @@ namespace rollnip
     /// The radius of curvature of the surface [mm] (infinity: flat).
     virtual double
     radius() const = 0;
+
+    /// @p n + 1 points of the surface at approach @p u0 for x2 from 0 to
+    /// @p half_width, in the roll's frame (the deformed configuration):
+    /// what the output draws beside the cover.
+    virtual std::vector<Point<dim>>
+    outline(const double       u0,
+            const double       half_width,
+            const unsigned int n) const = 0;
 
     bool
     is_flat() const;
@@ -64,6 +73,10 @@ namespace rollnip
     {
       return Rbar;
     }
+    std::vector<Point<dim>>
+    outline(const double       u0,
+            const double       half_width,
+            const unsigned int n) const override;
 
   private:
     Point<dim>
@@ -90,6 +103,10 @@ namespace rollnip
     gap_derivative_u0(const Point<dim> &x, const double u0) const override;
     double
     radius() const override;
+    std::vector<Point<dim>>
+    outline(const double       u0,
+            const double       half_width,
+            const unsigned int n) const override;
 
   private:
     const double R0;
@@ -129,6 +146,11 @@ namespace rollnip
     {
       return R_mate;
     }
+    /// The polygon's own nodes with |y2| <= @p half_width (@p n unused).
+    std::vector<Point<dim>>
+    outline(const double       u0,
+            const double       half_width,
+            const unsigned int n) const override;
 
   private:
     /// x in the second roll's frame.
