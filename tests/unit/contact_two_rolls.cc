@@ -230,7 +230,7 @@ namespace
     const auto  p = thick_covers("linear");
     RollProblem roll(p, MPI_COMM_WORLD);
     roll.setup();
-    TwoRollContact contact(roll, p);
+    TwoRollContact           contact(roll, p);
     testing::HertzComparison hertz(NipEstimates::contact_modulus(p),
                                    NipEstimates::effective_radius(p),
                                    55.7);
@@ -255,17 +255,15 @@ namespace
     std::vector<double> error;
     for (const double theta0 : {4., 2.})
       {
-        const ContactResult r = contact.solve(theta0 * deg);
-        const double        P_hertz =
-          NipEstimates::hertz_load(p, r.half_chord);
+        const ContactResult r       = contact.solve(theta0 * deg);
+        const double        P_hertz = NipEstimates::hertz_load(p, r.half_chord);
         error.push_back(relative(r.nip_load, P_hertz));
         checker.check(r.converged && error.back() < 1e-2,
                       "nonlinear, theta0 = " + testing::num(theta0) +
                         " deg: P = " + testing::num(r.nip_load) +
                         " N/mm, Hertz " + testing::num(P_hertz) +
-                        " N/mm at b = " + testing::num(r.half_chord) +
-                        " mm (" + testing::num(100 * error.back()) +
-                        " % < 1 %)");
+                        " N/mm at b = " + testing::num(r.half_chord) + " mm (" +
+                        testing::num(100 * error.back()) + " % < 1 %)");
         check_equilibrium(checker, r);
       }
     checker.check(error[1] < error[0],
