@@ -28,6 +28,25 @@ namespace rollnip
         prm.declare_entry(name, "", Patterns::Anything(), doc);
       }
 
+      /// @p text as a number if all of it is one, else NaN.
+      double
+      whole_number(const std::string &text)
+      {
+        std::size_t used  = 0;
+        double      value = 0;
+        try
+          {
+            value = std::stod(text, &used);
+          }
+        catch (...)
+          {
+            used = 0;
+          }
+        return used == text.size() && used > 0
+                 ? value
+                 : std::numeric_limits<double>::quiet_NaN();
+      }
+
       /// The number in entry @p name of subsection @p section (NaN when the
       /// entry is empty); 'inf' only if @p allow_inf.
       double
@@ -41,20 +60,11 @@ namespace rollnip
           return std::numeric_limits<double>::quiet_NaN();
         if (allow_inf && (text == "inf" || text == "infinity"))
           return std::numeric_limits<double>::infinity();
-        std::size_t used  = 0;
-        double      value = 0;
-        try
-          {
-            value = std::stod(text, &used);
-          }
-        catch (...)
-          {
-            used = 0;
-          }
-        AssertThrow(
-          used == text.size() && used > 0 && std::isfinite(value) && value > 0,
-          ExcMessage(section + "/" + name + " must be a positive number" +
-                     (allow_inf ? " or 'inf'" : "") + ", got '" + text + "'"));
+        const double value = whole_number(text);
+        AssertThrow(std::isfinite(value) && value > 0,
+                    ExcMessage(
+                      section + "/" + name + " must be a positive number" +
+                      (allow_inf ? " or 'inf'" : "") + ", got '" + text + "'"));
         return value;
       }
 
@@ -148,18 +158,8 @@ namespace rollnip
         std::vector<double>   readings;
         for (const auto &item : Utilities::split_string_list(text))
           {
-            std::size_t used  = 0;
-            double      value = std::numeric_limits<double>::quiet_NaN();
-            try
-              {
-                value = std::stod(item, &used);
-              }
-            catch (...)
-              {
-                used = 0;
-              }
-            AssertThrow(used == item.size() && value >= range.min &&
-                          value <= range.max,
+            const double value = whole_number(item);
+            AssertThrow(value >= range.min && value <= range.max,
                         ExcMessage("Material/Hardness = '" + item + "' " +
                                    Hardness::to_string(scale) +
                                    " is outside the range of its modulus "

@@ -21,6 +21,14 @@ require_executable rollnip "$rollnip"
 start_test sweep_pvd
 command -v python3 >/dev/null || fail "python3 is needed to parse the XML"
 
+# Runs rollnip on NAME.prm (output in NAME.out, NAME.err); exit 0 or fail.
+run_ok()
+{
+  local rc=0
+  "$rollnip" "$1.prm" > "$1.out" 2> "$1.err" || rc=$?
+  [ "$rc" -eq 0 ] || { cat "$1.err"; fail "$1.prm: exit code $rc"; }
+}
+
 cat > sweep.prm <<PRM
 subsection Mesh
   set Radial cells = 4
@@ -37,9 +45,7 @@ subsection Output
   set Directory = out
 end
 PRM
-rc=0
-"$rollnip" sweep.prm > stdout.txt 2> stderr.txt || rc=$?
-[ "$rc" -eq 0 ] || { cat stderr.txt; fail "exit code $rc"; }
+run_ok sweep
 pass "the sweep runs"
 
 python3 - <<'PY' || fail "the sweep PVD files are not what ParaView needs"
@@ -112,9 +118,7 @@ subsection Output
   set Directory = two
 end
 PRM
-rc=0
-"$rollnip" two.prm > stdout2.txt 2> stderr2.txt || rc=$?
-[ "$rc" -eq 0 ] || { cat stderr2.txt; fail "exit code $rc"; }
+run_ok two
 python3 - <<'PY' || fail "the two-roll sweep PVD does not hold both rolls"
 import os, sys, xml.etree.ElementTree as ET
 sets = list(ET.parse("two/solution_sweep.pvd").iter("DataSet"))
@@ -145,9 +149,7 @@ subsection Output
   set Directory = one
 end
 PRM
-rc=0
-"$rollnip" one.prm > stdout3.txt 2> stderr3.txt || rc=$?
-[ "$rc" -eq 0 ] || { cat stderr3.txt; fail "exit code $rc"; }
+run_ok one
 python3 - <<'PY' || fail "a single nip's PVD is not what ParaView needs"
 import os, sys, xml.etree.ElementTree as ET
 ok = True
