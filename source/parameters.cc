@@ -201,7 +201,7 @@ namespace rollnip
         declare_documented(
           prm,
           "Nip cells",
-          "8",
+          "6",
           Patterns::Integer(1),
           "Nip-fitted mesh: coarse circumferential cells in "
           "the contact zone [0, theta0], out of Circumferential "
@@ -212,9 +212,10 @@ namespace rollnip
                            Patterns::Double(1.),
                            "Nip-fitted mesh: width of the central coarse nip "
                            "cell over the one at the contact edge (where the "
-                           "pressure falls like a square root); 2 gives "
-                           "monotone convergence under refinement "
-                           "(doc/accuracy.md)");
+                           "pressure falls like a square root) for a nip "
+                           "small against the cover; it relaxes towards 1 "
+                           "(uniform) as the nip half-width reaches the "
+                           "cover thickness (doc/accuracy.md)");
       }
     } // namespace
 
@@ -860,6 +861,32 @@ namespace rollnip
     }
 
     void
+    Accuracy::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Accuracy");
+      declare_documented(prm,
+                         "Error estimate",
+                         "true",
+                         Patterns::Bool(),
+                         "Solve each nip a second time one mesh level "
+                         "coarser (finer at level 0) and report, beside P, "
+                         "u0, theta0, the nip width, the pressures and the "
+                         "bond stresses, their estimated error from the "
+                         "difference and the element's order of convergence "
+                         "(doc/accuracy.md); it costs about a third of the "
+                         "nip's solve");
+      prm.leave_subsection();
+    }
+
+    void
+    Accuracy::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Accuracy");
+      error_estimate = prm.get_bool("Error estimate");
+      prm.leave_subsection();
+    }
+
+    void
     AllParameters::declare(ParameterHandler &prm)
     {
       Geometry::declare(prm);
@@ -875,6 +902,7 @@ namespace rollnip
       Contact::declare(prm);
       MatingRoll::declare(prm);
       Study::declare(prm);
+      Accuracy::declare(prm);
     }
 
     void
@@ -893,6 +921,7 @@ namespace rollnip
       contact.parse(prm);
       mating_roll.parse(prm);
       study.parse(prm);
+      accuracy.parse(prm);
       if (mating_roll.covered)
         {
           // The rigid indenter's radius would be silently ignored.

@@ -277,7 +277,20 @@ namespace rollnip
       parse(ParameterHandler &prm);
     };
 
-    /// All parameters of a run, one member per subsection.
+    /// How sure the reported numbers are (doc/accuracy.md, "Error
+    /// estimates").
+    struct Accuracy
+    {
+      /// Whether each nip is solved again one mesh level coarser (finer
+      /// at level 0) to estimate the error of every reported number.
+      bool error_estimate = true;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+    };
+
     /// The roll the cover is pressed against, when it is a covered roll
     /// rather than the rigid circle or plane of Contact/Indenter radius.
     struct MatingRoll
@@ -311,6 +324,7 @@ namespace rollnip
       Contact            contact;
       MatingRoll         mating_roll;
       Study              study;
+      Accuracy           accuracy;
 
       /// The scene of the covered mating roll: these parameters with its
       /// geometry, material and mesh, its theory this roll's, output in

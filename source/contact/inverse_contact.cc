@@ -518,7 +518,8 @@ namespace rollnip
 
   void
   write_contact_results(const ContactResult &result,
-                        const std::string   &directory)
+                        const std::string   &directory,
+                        const std::string   &more)
   {
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
       return;
@@ -552,6 +553,7 @@ namespace rollnip
             << "mating_roll_penetration_over_u0 = " << result.mate_penetration
             << '\n'
             << "two_roll_passes = " << result.outer_iterations << '\n';
+      out << more;
     });
     write_atomically(directory + "/contact_pressure.csv",
                      [&](std::ostream &out) {

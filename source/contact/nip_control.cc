@@ -220,7 +220,7 @@ namespace rollnip
   }
 
   ContactResult
-  NipControl::solve(const double target)
+  NipControl::solve(const double target, const double guess)
   {
     const auto &c = parameters.contact;
     if (c.mode == Parameters::ContactMode::nip_angle)
@@ -233,8 +233,10 @@ namespace rollnip
                              Utilities::MPI::this_mpi_process(comm) == 0);
     const double       theta_max = contact.max_nip_angle();
 
-    double theta = converged.empty() ? first_guess(target) : predict(target);
-    theta        = std::min(theta, theta_max);
+    double theta            = guess > 0           ? guess
+                              : converged.empty() ? first_guess(target)
+                                                  : predict(target);
+    theta                   = std::min(theta, theta_max);
     double        failed_at = std::numeric_limits<double>::max();
     ContactResult r;
     for (unsigned int it = 1; it <= c.max_iterations; ++it)

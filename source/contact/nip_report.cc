@@ -4,8 +4,10 @@
 #include <rollnip/material/material_table.h>
 #include <rollnip/output/atomic_file.h>
 
+#include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 namespace rollnip
@@ -19,11 +21,28 @@ namespace rollnip
 
   namespace
   {
-    /// One nip's numbers in the report's units.
+    /// One nip's numbers in the report's units, and their estimated
+    /// errors (nan: none).
     struct ReportRow
     {
       double load_user, load, width, u0, peak, mean, dwell;
+      double load_err, width_err, u0_err, peak_err, mean_err;
     };
+
+    /// @p value (three decimals) with its estimated error @p error (two
+    /// significant digits; skipped if nan) in a field of @p width
+    /// characters.
+    std::string
+    with_error(const double value, const double error, const int width)
+    {
+      std::ostringstream s;
+      s << std::fixed << std::setprecision(3) << value;
+      if (!std::isnan(error))
+        s << " +- " << std::defaultfloat << std::setprecision(2) << error;
+      std::ostringstream field;
+      field << std::setw(width) << s.str();
+      return field.str();
+    }
 
     ReportRow
     report_row(const NipRow &r, const Parameters::Contact &c)
@@ -39,6 +58,16 @@ namespace rollnip
       row.mean = n.nip_load / row.width;
       row.dwell =
         c.surface_speed > 0 ? dwell_time_ms(row.width, c.surface_speed) : 0;
+      const ErrorEstimate &e   = r.error;
+      const double         nan = std::numeric_limits<double>::quiet_NaN();
+      auto err = [&](const NipQuantity::Index q, const double factor = 1) {
+        return e.available ? factor * e.error[q] : nan;
+      };
+      row.load_err  = err(NipQuantity::load);
+      row.width_err = err(NipQuantity::half_chord, 2);
+      row.u0_err    = err(NipQuantity::indentation);
+      row.peak_err  = err(NipQuantity::peak_pressure);
+      row.mean_err  = err(NipQuantity::mean_pressure);
       return row;
     }
 
@@ -68,16 +97,22 @@ namespace rollnip
       if (c.load_unit.is_total_force())
         std::cout << "; total force on a face of " << c.load_unit.face_length
                   << " mm";
-      std::cout << ")" << std::endl
-                << std::setw(16) << "load [" + c.load_unit.name + "]"
-                << "  width 2b [mm]  u0 [mm]  peak p [MPa]  mean p [MPa]"
+      std::cout << ")" << std::endl;
+      // With error estimates each number is followed by +- its error.
+      const bool errors = !rows.empty() && !std::isnan(rows[0].width_err);
+      const int  w      = errors ? 10 : 0;
+      std::cout << std::setw(16) << "load [" + c.load_unit.name + "]"
+                << std::setw(15 + w) << "width 2b [mm]" << std::setw(9 + w)
+                << "u0 [mm]" << std::setw(14 + w) << "peak p [MPa]"
+                << std::setw(14 + w) << "mean p [MPa]"
                 << (dwell ? "  dwell [ms]" : "") << std::endl;
       for (const auto &r : rows)
         {
           std::cout << std::fixed << std::setprecision(3) << std::setw(16)
-                    << r.load_user << std::setw(15) << r.width << std::setw(9)
-                    << r.u0 << std::setw(14) << r.peak << std::setw(14)
-                    << r.mean;
+                    << r.load_user << with_error(r.width, r.width_err, 15 + w)
+                    << with_error(r.u0, r.u0_err, 9 + w)
+                    << with_error(r.peak, r.peak_err, 14 + w)
+                    << with_error(r.mean, r.mean_err, 14 + w);
           if (dwell)
             std::cout << std::setw(12) << r.dwell;
           std::cout << std::defaultfloat << std::endl;
@@ -107,7 +142,9 @@ namespace rollnip
             << (two_rolls ? ",mating_roll_youngs_modulus_E_MPa,"
                             "mating_roll_E_estimated_from_hardness"
                           : "")
-            << '\n'
+            << ",line_load_err_N_per_mm,nip_width_2b_err_mm,"
+               "indentation_u0_err_mm,peak_pressure_err_MPa,"
+               "mean_pressure_err_MPa\n"
             << std::setprecision(10);
         for (unsigned int i = 0; i < rows.size(); ++i)
           {
@@ -120,7 +157,8 @@ namespace rollnip
             out << E << ',' << (estimate ? "yes" : "no");
             if (two_rolls)
               out << ',' << E_mate << ',' << (mate_estimate ? "yes" : "no");
-            out << '\n';
+            out << ',' << r.load_err << ',' << r.width_err << ',' << r.u0_err
+                << ',' << r.peak_err << ',' << r.mean_err << '\n';
           }
       });
     }

@@ -1,4 +1,5 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
 
 #include <rollnip/boundary_ids.h>
 #include <rollnip/contact/counter_surface.h>
@@ -12,7 +13,9 @@
 #include <rollnip/material/material_table.h>
 #include <rollnip/output/atomic_file.h>
 #include <rollnip/output/polyline_vtp.h>
+#include <rollnip/output/silence_cerr.h>
 #include <rollnip/output/sweep_pvd.h>
+#include <rollnip/run_errors.h>
 
 #include <algorithm>
 #include <cmath>
@@ -84,17 +87,13 @@ namespace rollnip
     constexpr double traction_mismatch_warning = 0.05;
 
     /// Fills the postprocessed columns of @p row from the converged nip
-    /// number @p n of @p nonlinear, prints the load check, and flags a
-    /// nip whose check is off (the mesh does not resolve it).
+    /// of @p problem.
     void
-    evaluate_nip(const RollProblem               &nonlinear,
-                 const Parameters::AllParameters &parameters,
-                 const unsigned int               n,
-                 NipRow                          &row)
+    fill_nip_values(const RollProblem               &problem,
+                    const Parameters::AllParameters &parameters,
+                    NipRow                          &row)
     {
-      const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-      ConditionalOStream pcout(std::cout, root);
-      const SurfaceData  data   = nonlinear.surface_data(1.);
+      const SurfaceData data    = problem.surface_data(1.);
       row.max_principal_strain  = data.extremes.max_principal_stretch - 1;
       const BondExtremes bond   = bond_extremes(data.bond);
       row.bond_sigma_rr_min     = bond.sigma_rr_min;
@@ -103,6 +102,22 @@ namespace rollnip
       const double b            = row.nonlinear.half_chord;
       row.hertz_load            = NipEstimates::hertz_load(parameters, b);
       row.thin_layer_load       = NipEstimates::thin_layer_load(parameters, b);
+      row.n_dofs                = problem.n_dofs();
+      row.n_cells               = problem.n_cells();
+    }
+
+    /// fill_nip_values() for nip number @p n of @p nonlinear; prints the
+    /// load check, and flags a nip whose check is off (the mesh does not
+    /// resolve it).
+    void
+    evaluate_nip(const RollProblem               &nonlinear,
+                 const Parameters::AllParameters &parameters,
+                 const unsigned int               n,
+                 NipRow                          &row)
+    {
+      const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      ConditionalOStream pcout(std::cout, root);
+      fill_nip_values(nonlinear, parameters, row);
       const double difference =
         row.load_from_traction / row.nonlinear.nip_load - 1;
       pcout << "Nip " << n << ": P from the applied pressure "
@@ -122,13 +137,197 @@ namespace rollnip
                   << std::endl;
     }
 
+    /// The scene of the error estimate's companion solve: this one with
+    /// both rolls' meshes one level coarser (one finer at level 0), no
+    /// linear companion, no files.
+    Parameters::AllParameters
+    companion_parameters(const Parameters::AllParameters &p)
+    {
+      auto other = [](const unsigned int level) {
+        return level > 0 ? level - 1 : level + 1;
+      };
+      Parameters::AllParameters c = p;
+      c.mesh.global_refinements   = other(p.mesh.global_refinements);
+      c.mating_roll.mesh.global_refinements =
+        other(p.mating_roll.mesh.global_refinements);
+      c.contact.compare_linear  = false;
+      c.output.print_timing     = false;
+      c.output.write_vtu        = false;
+      c.output.write_csv        = false;
+      c.accuracy.error_estimate = false;
+      return c;
+    }
+
+    /**
+     * The companion of Accuracy/Error estimate: the scene on the other
+     * mesh level, which solves each nip again with the same control
+     * (theta0, P or u0), started at the answer's theta0, without a word on
+     * the screen; the difference gives every number's error
+     * (estimate_errors()).
+     */
+    class ErrorCompanion
+    {
+    public:
+      /// Builds the companion scene; one it cannot build (a mesh level
+      /// that cannot hold the nip, say) leaves every nip without an
+      /// estimate, and says why, instead of stopping the run.
+      explicit ErrorCompanion(const Parameters::AllParameters &p)
+          : parameters(companion_parameters(p))
+          , level(p.mesh.global_refinements)
+      {
+        SilenceStream quiet(std::cout);
+        try
+          {
+            problem = std::make_unique<RollProblem>(parameters, MPI_COMM_WORLD);
+            problem->setup();
+            contact = make_nip_solver(*problem, parameters);
+            control = std::make_unique<NipControl>(*contact, parameters);
+          }
+        catch (const std::exception &e)
+          {
+            unavailable = "the scene at mesh level " +
+                          std::to_string(parameters.mesh.global_refinements) +
+                          " cannot be built (" + one_line_message(e) + ")";
+            release();
+          }
+      }
+
+      ~ErrorCompanion()
+      {
+        release();
+      }
+
+      /// The error estimate of the converged nip @p row, solved for
+      /// @p target (a value of Contact/Values, in the program's units).
+      ErrorEstimate
+      estimate(const NipRow &row, const double target)
+      {
+        const unsigned int other = parameters.mesh.global_refinements;
+        ErrorEstimate      e;
+        if (!control)
+          {
+            e.missing = unavailable;
+            return e;
+          }
+        Timer         timer;
+        ContactResult r;
+        try
+          {
+            SilenceStream quiet(std::cout);
+            r = control->solve(target, row.nonlinear.theta0);
+          }
+        catch (const std::exception &error)
+          {
+            r.converged = false;
+            r.message   = one_line_message(error);
+          }
+        if (r.converged)
+          {
+            NipRow c;
+            c.nonlinear = r;
+            fill_nip_values(*problem, parameters, c);
+            e = estimate_errors(nip_numbers(row),
+                                nip_numbers(c),
+                                parameters.discretization.element,
+                                level,
+                                other);
+          }
+        else
+          e.missing = "the same nip at mesh level " + std::to_string(other) +
+                      " did not converge (" + r.message + ")";
+        e.companion_level   = other;
+        e.companion_seconds = timer.wall_time();
+        return e;
+      }
+
+    private:
+      /// Destroys the companion's objects, its timer silenced (it would
+      /// report on an exception in flight).
+      void
+      release()
+      {
+        control.reset();
+        contact.reset();
+        if (problem)
+          problem->silence_timer();
+        problem.reset();
+      }
+
+      const Parameters::AllParameters parameters;
+      const unsigned int              level;       ///< of the answer
+      std::string                     unavailable; ///< why, if unbuilt
+      std::unique_ptr<RollProblem>    problem;
+      std::unique_ptr<NipSolver>      contact;
+      std::unique_ptr<NipControl>     control;
+    };
+
+    /// The estimate of @p row's errors as lines of contact.txt: one
+    /// key = value per number, absolute, in the number's unit.
+    std::string
+    error_lines(const NipRow &row, const Parameters::AllParameters &p)
+    {
+      const ErrorEstimate &e = row.error;
+      std::ostringstream   out;
+      out << std::setprecision(3);
+      if (!e.available)
+        {
+          out << "error_estimate = none ("
+              << (e.missing.empty() ? "Accuracy/Error estimate = false"
+                                    : e.missing)
+              << ")\n";
+          return out.str();
+        }
+      out << "# estimated errors: "
+          << e.method(p.discretization.element, p.mesh.global_refinements)
+          << '\n';
+      for (unsigned int q = 0; q < NipQuantity::n_quantities; ++q)
+        out << "estimated_error_" << NipQuantity::key(NipQuantity::Index(q))
+            << '_' << NipQuantity::unit(NipQuantity::Index(q)) << " = "
+            << e.error[q] << '\n';
+      out << "error_estimate_wall_time_s = " << e.companion_seconds << '\n';
+      return out.str();
+    }
+
+    /// Nip @p n's estimated errors on the screen, relative, in one line.
+    void
+    print_error_estimate(const NipRow &row, const unsigned int n)
+    {
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+        return;
+      const ErrorEstimate &e = row.error;
+      if (!e.available)
+        {
+          std::cout << "Nip " << n << ": no error estimate: " << e.missing
+                    << std::endl;
+          return;
+        }
+      const NipNumbers v = nip_numbers(row);
+      std::cout << "Nip " << n << ": estimated errors (against mesh level "
+                << e.companion_level << ", " << std::fixed
+                << std::setprecision(2) << e.companion_seconds << " s):";
+      const char *separator = " ";
+      for (unsigned int q = NipQuantity::load; q < NipQuantity::n_quantities;
+           ++q)
+        {
+          const auto i = NipQuantity::Index(q);
+          std::cout << separator << NipQuantity::label(i) << ' '
+                    << std::setprecision(q >= NipQuantity::bond_sigma_rr ? 1
+                                                                         : 3)
+                    << 100 * e.relative(i, v[q]) << " %";
+          separator = ", ";
+        }
+      std::cout << std::defaultfloat << std::endl;
+    }
+
     /// The results files of one nip in @p dir: the problem's (status from
-    /// the contact result) and the contact's (collective).
+    /// the contact result) and the contact's, with @p error_text, the
+    /// estimated errors, in contact.txt (collective).
     void
     write_nip(RollProblem         &problem,
               const ContactResult &result,
               const std::string   &dir,
-              const bool           linear_companion = false)
+              const bool           linear_companion = false,
+              const std::string   &error_text       = "")
     {
       // A linear companion that failed is said once; its columns are nan.
       if (linear_companion && !result.converged &&
@@ -140,7 +339,7 @@ namespace rollnip
       status.load_fraction = 1.;
       status.message       = "contact: " + result.message;
       problem.write_results(status);
-      write_contact_results(result, dir);
+      write_contact_results(result, dir, error_text);
     }
 
     /// What the time of the sweep's PVD is: the control of the sweep.
@@ -236,23 +435,36 @@ namespace rollnip
                      "P_from_traction_N_per_mm,conformity,penetration,"
                      "P_linear_N_per_mm,u0_linear_mm,peak_pressure_linear_MPa,"
                      "P_hertz_N_per_mm,P_thin_layer_N_per_mm,"
-                     "half_chord_over_cover_thickness\n"
-                  << std::setprecision(10);
+                     "half_chord_over_cover_thickness";
+              // The estimated errors, absolute (nan: none).
+              for (unsigned int q = 0; q < NipQuantity::n_quantities; ++q)
+                out << ',' << NipQuantity::key(NipQuantity::Index(q)) << "_err_"
+                    << NipQuantity::unit(NipQuantity::Index(q));
+              out << '\n' << std::setprecision(10);
               for (const auto &r : rows)
-                out << r.nonlinear.theta0 * deg << ',' << r.nonlinear.nip_load
-                    << ',' << r.nonlinear.indentation << ','
-                    << r.nonlinear.half_chord << ',' << r.nonlinear.half_arc
-                    << ',' << r.nonlinear.peak_pressure << ','
-                    << r.nonlinear.nip_load / (2 * r.nonlinear.half_chord)
-                    << ',' << r.max_principal_strain << ','
-                    << r.bond_sigma_rr_min << ',' << r.bond_sigma_rtheta_max
-                    << ',' << r.load_from_traction << ','
-                    << r.nonlinear.conformity << ',' << r.nonlinear.penetration
-                    << ',' << linear_value(r, r.linear.nip_load) << ','
-                    << linear_value(r, r.linear.indentation) << ','
-                    << linear_value(r, r.linear.peak_pressure) << ','
-                    << r.hertz_load << ',' << r.thin_layer_load << ','
-                    << r.nonlinear.half_chord / cover_thickness << '\n';
+                {
+                  out << r.nonlinear.theta0 * deg << ',' << r.nonlinear.nip_load
+                      << ',' << r.nonlinear.indentation << ','
+                      << r.nonlinear.half_chord << ',' << r.nonlinear.half_arc
+                      << ',' << r.nonlinear.peak_pressure << ','
+                      << r.nonlinear.nip_load / (2 * r.nonlinear.half_chord)
+                      << ',' << r.max_principal_strain << ','
+                      << r.bond_sigma_rr_min << ',' << r.bond_sigma_rtheta_max
+                      << ',' << r.load_from_traction << ','
+                      << r.nonlinear.conformity << ','
+                      << r.nonlinear.penetration << ','
+                      << linear_value(r, r.linear.nip_load) << ','
+                      << linear_value(r, r.linear.indentation) << ','
+                      << linear_value(r, r.linear.peak_pressure) << ','
+                      << r.hertz_load << ',' << r.thin_layer_load << ','
+                      << r.nonlinear.half_chord / cover_thickness;
+                  for (unsigned int q = 0; q < NipQuantity::n_quantities; ++q)
+                    out << ','
+                        << (r.error.available
+                              ? r.error.error[q]
+                              : std::numeric_limits<double>::quiet_NaN());
+                  out << '\n';
+                }
             });
         }
     }
@@ -276,16 +488,17 @@ namespace rollnip
       pvd.add(time, nip + "/contact_pressure.vtp", 2);
     }
 
-    /// Solves the nips of Contact/Values in turn, writes and evaluates
+    /// Solves the nips of Contact/Values in turn, evaluates and writes
     /// each, and adds the converged ones to @p rows, with their linear
-    /// companions if @p linear is given; returns why the sweep stopped,
-    /// empty if it did not.
+    /// companions if @p linear is given and their error estimates if
+    /// @p companion is; returns why the sweep stopped, empty if it did not.
     std::string
     sweep_nips(RollProblem                     &nonlinear,
                NipSolver                       &contact,
                NipControl                      &control,
                RollProblem                     *linear,
                NipSolver                       *linear_contact,
+               ErrorCompanion                  *companion,
                const Parameters::AllParameters &parameters,
                std::vector<NipRow>             &rows)
     {
@@ -308,13 +521,25 @@ namespace rollnip
           const std::string vtu =
             "/solution-" + Utilities::int_to_string(n + 1, 4) + ".pvtu";
           NipRow row;
-          row.n_dofs    = nonlinear.n_dofs();
-          row.n_cells   = nonlinear.n_cells();
           row.nonlinear = control.solve(values[n]);
+          if (row.nonlinear.converged)
+            {
+              evaluate_nip(nonlinear, parameters, n + 1, row);
+              if (companion)
+                {
+                  row.error = companion->estimate(row, values[n]);
+                  print_error_estimate(row, n + 1);
+                }
+            }
           nonlinear.set_output_directory(dir);
           if (parameters.output.write_vtu)
             nonlinear.write_vtu(n + 1, 1.);
-          write_nip(nonlinear, row.nonlinear, dir);
+          write_nip(nonlinear,
+                    row.nonlinear,
+                    dir,
+                    false,
+                    row.nonlinear.converged ? error_lines(row, parameters)
+                                            : "");
           contact.write_results(row.nonlinear,
                                 dir,
                                 n + 1,
@@ -327,8 +552,6 @@ namespace rollnip
                                n + 1,
                                values.size(),
                                rows.size());
-
-          evaluate_nip(nonlinear, parameters, n + 1, row);
 
           if (linear)
             {
@@ -388,6 +611,22 @@ namespace rollnip
     }
   } // namespace
 
+  NipNumbers
+  nip_numbers(const NipRow &row)
+  {
+    const ContactResult &r = row.nonlinear;
+    NipNumbers           v;
+    v[NipQuantity::theta0]            = r.theta0 * deg;
+    v[NipQuantity::load]              = r.nip_load;
+    v[NipQuantity::indentation]       = r.indentation;
+    v[NipQuantity::half_chord]        = r.half_chord;
+    v[NipQuantity::peak_pressure]     = r.peak_pressure;
+    v[NipQuantity::mean_pressure]     = r.nip_load / (2 * r.half_chord);
+    v[NipQuantity::bond_sigma_rr]     = row.bond_sigma_rr_min;
+    v[NipQuantity::bond_sigma_rtheta] = row.bond_sigma_rtheta_max;
+    return v;
+  }
+
   std::unique_ptr<NipSolver>
   make_nip_solver(RollProblem                     &roll,
                   const Parameters::AllParameters &parameters)
@@ -404,9 +643,11 @@ namespace rollnip
     std::vector<NipRow> rows;
     std::string         failure;
     bool                with_linear = false;
-    // The problems are destroyed inside the handler when something throws,
-    // so that their timers do not report on an exception in flight.
-    std::unique_ptr<RollProblem> nonlinear_problem, linear;
+    // The problems (and the companion's) are destroyed inside the handler
+    // when something throws, so that their timers do not report on an
+    // exception in flight.
+    std::unique_ptr<RollProblem>    nonlinear_problem, linear;
+    std::unique_ptr<ErrorCompanion> companion;
     try
       {
         nonlinear_problem =
@@ -430,11 +671,16 @@ namespace rollnip
             linear_contact = make_nip_solver(*linear, linear_parameters);
           }
 
+        // The error estimate's companion (Accuracy/Error estimate).
+        if (parameters.accuracy.error_estimate)
+          companion = std::make_unique<ErrorCompanion>(parameters);
+
         failure = sweep_nips(nonlinear,
                              *contact,
                              control,
                              linear.get(),
                              linear_contact.get(),
+                             companion.get(),
                              parameters,
                              rows);
 
@@ -445,6 +691,7 @@ namespace rollnip
         for (auto *p : {nonlinear_problem.get(), linear.get()})
           if (p)
             p->silence_timer();
+        companion.reset();
         linear.reset();
         nonlinear_problem.reset();
         throw;

@@ -252,7 +252,9 @@ namespace rollnip
         set_sector(parameters, variant.sector_angle, p);
       p.output.print_timing    = false;
       p.contact.compare_linear = false;
-      p.output.directory       = parameters.output.directory + "/study/" +
+      // The study measures the error itself, from all its levels.
+      p.accuracy.error_estimate = false;
+      p.output.directory        = parameters.output.directory + "/study/" +
                            variant.tag + "-level-" + std::to_string(level);
       if (p.contact.mode != Parameters::ContactMode::none)
         p.contact.values.resize(1);

@@ -12,6 +12,9 @@
 #    each load and E = 3.6051 MPa from Gent's relation, to a relative 1e-4
 #    (the control and conformity tolerances are 1e-6; 1e-4 leaves room
 #    for the direct solver's rounding on another machine);
+#  - the estimated errors are in the report (2b's twice b's in
+#    nip_characteristic.csv), positive, below 1 %, and on the screen as
+#    value +- error;
 #  - plot_results.sh draws nip_report.png (width and peak pressure against
 #    the line load).
 #
@@ -41,7 +44,7 @@ pass "inputs, modulus estimate and nip report echoed on the screen"
 dir=output/engineering_nip
 report="$dir/nip_report.csv"
 [ -f "$report" ] || fail "no $report"
-header="nip,line_load_kN_per_m,line_load_N_per_mm,nip_width_2b_mm,indentation_u0_mm,peak_pressure_MPa,mean_pressure_MPa,surface_speed_m_per_min,dwell_time_ms,youngs_modulus_E_MPa,E_estimated_from_hardness"
+header="nip,line_load_kN_per_m,line_load_N_per_mm,nip_width_2b_mm,indentation_u0_mm,peak_pressure_MPa,mean_pressure_MPa,surface_speed_m_per_min,dwell_time_ms,youngs_modulus_E_MPa,E_estimated_from_hardness,line_load_err_N_per_mm,nip_width_2b_err_mm,indentation_u0_err_mm,peak_pressure_err_MPa,mean_pressure_err_MPa"
 [ "$(head -n 1 "$report")" = "$header" ] || fail "unexpected header: $(head -n 1 "$report")"
 [ "$(($(wc -l < "$report") - 1))" -eq 3 ] || fail "expected 3 rows"
 pass "header with units, 3 rows"
@@ -52,9 +55,9 @@ cell() {
     NR == r + 1 { print $c }' "$3"
 }
 
-expected_2b=(27.67452415 35.17031932 40.2433833)
-expected_u0=(1.257302111 1.831414189 2.266938741)
-expected_peak=(0.9738371315 1.577851682 2.106181483)
+expected_2b=(27.71325281 35.21952509 40.29746698)
+expected_u0=(1.257634687 1.831875007 2.267502433)
+expected_peak=(0.9737827911 1.577801076 2.106156332)
 for n in 1 2 3; do
   load="$(cell $n line_load_kN_per_m "$report")"
   width="$(cell $n nip_width_2b_mm "$report")"
@@ -73,6 +76,28 @@ for n in 1 2 3; do
   check_rel_close "nip $n u0 [mm]" "$(cell $n indentation_u0_mm "$report")" "${expected_u0[n - 1]}" 1e-4
   check_rel_close "nip $n peak pressure [MPa]" "$(cell $n peak_pressure_MPa "$report")" "${expected_peak[n - 1]}" 1e-4
 done
+# The estimated errors (Accuracy/Error estimate, on by default): the
+# report's are those of nip_characteristic.csv (2b: twice b's), each
+# positive and below 1 % of its number on this mesh, and the screen shows
+# every number with its +- error.
+for n in 1 2 3; do
+  width="$(cell $n nip_width_2b_mm "$report")"
+  width_err="$(cell $n nip_width_2b_err_mm "$report")"
+  b_err="$(cell $n half_chord_err_mm "$dir/nip_characteristic.csv")"
+  check_rel_close "nip $n 2b error = 2 x b error" "$width_err" "$(awk -v e="$b_err" 'BEGIN { printf "%.12g", 2 * e }')" 1e-9
+  for pair in "nip_width_2b_mm nip_width_2b_err_mm" "indentation_u0_mm indentation_u0_err_mm" \
+              "peak_pressure_MPa peak_pressure_err_MPa" "mean_pressure_MPa mean_pressure_err_MPa"; do
+    set -- $pair
+    awk -v v="$(cell $n "$1" "$report")" -v e="$(cell $n "$2" "$report")" \
+      'BEGIN { exit !(e > 0 && e < 0.01 * v) }' ||
+      fail "nip $n: $2 = $(cell $n "$2" "$report") is not in (0, 1 % of $1)"
+  done
+done
+pass "estimated errors of 2b, u0, peak and mean pressure: positive, below 1 %, 2b's twice b's"
+[ "$(grep -A 4 '^Nip report' stdout.txt | grep -c ' +- ')" -eq 3 ] ||
+  fail "the nip report on the screen does not show the numbers with +- errors"
+pass "the screen report shows each number +- its error"
+
 check_rel_close "E [MPa]" "$(cell 1 youngs_modulus_E_MPa "$report")" 3.605072697 1e-8
 [ "$(cell 1 E_estimated_from_hardness "$report")" = yes ] || fail "E not flagged as an estimate"
 pass "E flagged as estimated from hardness"

@@ -91,8 +91,9 @@ namespace
       if (std::abs(x.norm() - R0) < tol &&
           std::atan2(x[1], x[0]) < theta0 * deg + tol / R0)
         ++in_nip;
-    const unsigned int expected = 8 * (1u << p.mesh.global_refinements) + 1;
-    const std::string  where    = "sector " + testing::num(sector) +
+    const unsigned int expected =
+      p.mesh.nip_cells * (1u << p.mesh.global_refinements) + 1;
+    const std::string where = "sector " + testing::num(sector) +
                               " deg, theta0 " + testing::num(theta0) + " deg";
     if (!edge || !on_arcs || in_nip != expected)
       checker.check(false,

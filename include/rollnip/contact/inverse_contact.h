@@ -201,11 +201,13 @@ namespace rollnip
     Converged converged;
   };
 
-  /// contact.txt (scalars and checks) and contact_pressure.csv (f at the
-  /// knots) in @p directory, written by rank 0.
+  /// contact.txt (scalars and checks, then the lines @p more) and
+  /// contact_pressure.csv (f at the knots) in @p directory, written by
+  /// rank 0.
   void
   write_contact_results(const ContactResult &result,
-                        const std::string   &directory);
+                        const std::string   &directory,
+                        const std::string   &more = "");
 } // namespace rollnip
 
 #endif

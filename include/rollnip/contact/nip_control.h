@@ -34,9 +34,10 @@ namespace rollnip
     NipControl(NipSolver &contact, const Parameters::AllParameters &p);
 
     /// The nip for @p target: theta0 [rad] for Mode = nip angle, else P
-    /// [N/mm] or u0 [mm].
+    /// [N/mm] or u0 [mm]; the first theta0 tried is @p guess [rad] if
+    /// positive (the same nip on another mesh), else a prediction.
     ContactResult
-    solve(const double target);
+    solve(const double target, const double guess = 0);
 
     /// Contact solves (inverse iterations) run so far, failed ones too.
     unsigned int

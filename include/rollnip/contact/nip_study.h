@@ -4,6 +4,7 @@
 #include <rollnip/contact/inverse_contact.h>
 #include <rollnip/contact/nip_control.h>
 #include <rollnip/parameters.h>
+#include <rollnip/postprocess/error_estimate.h>
 #include <rollnip/problem.h>
 
 #include <memory>
@@ -24,7 +25,12 @@ namespace rollnip
     double        thin_layer_load = 0; ///< thin-layer P for the same half-chord
     types::global_dof_index n_dofs  = 0; ///< of the nonlinear problem
     unsigned int            n_cells = 0;
+    ErrorEstimate           error; ///< of the nonlinear nip's numbers
   };
+
+  /// The numbers of @p row that carry an error estimate.
+  NipNumbers
+  nip_numbers(const NipRow &row);
 
   /// The contact solver of the scene: InverseContact against the rigid
   /// indenter, or TwoRollContact against a covered mating roll.

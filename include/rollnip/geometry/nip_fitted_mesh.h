@@ -36,15 +36,17 @@ namespace rollnip
    * each vertex to the angle theta(s; theta0):
    *  - the first Mesh/Nip cells coarse cells cover [0, theta0], their
    *    widths shrinking geometrically towards the edge by Mesh/Nip grading
-   *    (the pressure falls like a square root there);
+   *    for a nip small against the cover (the pressure falls like a square
+   *    root there), more evenly as the nip reaches the cover's size;
    *  - the remaining cells cover [theta0, sector angle], the first as wide
    *    as the last nip cell, growing geometrically to the far edge;
    *  - fine vertices are interpolated linearly in s between the coarse
    *    ones, which is where refinement in the angle would put them;
    *  - every radius keeps the same angles, so the cells below the surface
    *    follow the surface cells and stay (r, theta) rectangles;
-   *  - the radial cells thin towards the surface for small nips, so that
-   *    the cells under the nip do not become flat slivers.
+   *  - the radial cells thin towards the surface where the cells under the
+   *    nip would be too thick for their width: up to square for a nip
+   *    small against the cover, up to 4 times for a nip of its size.
    * Only vertex positions change with theta0: the connectivity, the DoF
    * numbering and the sparsity pattern stay, so a factorisation's analysis
    * and the previous nip's state carry over. The map is smooth in theta0,
@@ -84,6 +86,13 @@ namespace rollnip
     /// the outermost cell about as thick as a coarse nip cell is wide.
     std::vector<double>
     coarse_radii(const double theta0) const;
+
+    /// How much the nip @p theta0 [rad] is of the cover's size: 0 for a
+    /// nip small against the cover thickness (a << h, Hertz-like), towards
+    /// 1 once a is several tenths of h; smooth in theta0. It sets how much
+    /// the nip cells are edge-graded and the surface cells thinned.
+    double
+    cover_weight(const double theta0) const;
 
     /// The coordinate of the logical @p s in [0, 1] for the coarse
     /// vertex coordinates @p T, linear between them.

@@ -1,0 +1,203 @@
+#!/usr/bin/env python3
+"""Accuracy of the default scene against an independent reference.
+
+The run-30 scene (parameters/batra1980.prm: R1 = 47.2, R0 = 60.7, Rbar =
+76.2 mm, C1 + C2 = 0.5 MPa) under indentation control at u0 = 0.5, 1, 2, 3
+mm. The reference is another element family: Q2-P1 on the fixed graded
+mesh (Nip fitting = off, 6 x 24 coarse cells, grading 10) at levels
+REF_LEVELS, the finest taken as the reference and the change from the one
+before printed as its own error bound. Every Q1-P0 (and Q2-P1) run of the
+table is measured against it, on the nip-fitted and on the fixed mesh.
+
+Each run under test also reports its own error estimate (Accuracy/Error
+estimate); the table gives, per nip, the true relative error, the
+estimated one and their ratio, the effectivity.
+
+Usage: [ROLLNIP_SCENE=run30|layered] [ROLLNIP_REFERENCE=fixed|fitted]
+       python3 benchmarks/accuracy_reference.py
+           [--quick] [KEY=VALUE ...]
+    --quick     reference at level 2 only (minutes less; for tuning)
+    KEY=VALUE   extra Mesh entries for the runs under test, e.g.
+                "Nip cells=6"
+
+Uses build/rollnip or $ROLLNIP_BIN. Prints a Markdown table (relative error
+of P, of the nip half-width b and of the peak pressure at each u0) and
+writes it as CSV to benchmarks/results/.
+"""
+
+import csv
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROLLNIP = os.environ.get("ROLLNIP_BIN", os.path.join(ROOT, "build", "rollnip"))
+BASE = os.path.join(ROOT, "parameters", "batra1980.prm")
+U0 = [0.5, 1, 2, 3]  # mm
+# The scenes: extra .prm text over BASE and the indentations [mm].
+SCENES = {
+    "run30": ("", [0.5, 1, 2, 3]),
+    # A 3.5 mm top layer 5 times stiffer than its 10 mm base.
+    "layered": ("""
+subsection Material
+  set C1 = 0.25, 1.25
+  set C2 = 0.25, 1.25
+  set Layer thicknesses = 10, 3.5
+end
+""", [1, 1.5, 2]),
+}
+SCENE = os.environ.get("ROLLNIP_SCENE", "run30")
+# The reference: Q2-P1 on the fixed graded mesh (Nip fitting = off) or on
+# the nip-fitted mesh, whose P(u0) and b(u0) are smooth.
+REFERENCE = os.environ.get("ROLLNIP_REFERENCE", "fixed")
+SCENE_TEXT, U0 = SCENES[SCENE]
+KEYS = ("P_N_per_mm", "half_chord_mm", "peak_pressure_MPa",
+        "bond_sigma_rtheta_max_MPa")
+ERR_KEYS = ("P_err_N_per_mm", "half_chord_err_mm", "peak_pressure_err_MPa",
+            "bond_sigma_rtheta_max_err_MPa")
+NAMES = ("P", "b", "peak", "bond shear")
+
+
+def fail(message):
+    print("accuracy_reference: error: " + message, file=sys.stderr)
+    sys.exit(1)
+
+
+def solve(tmp, element, level, fitting, mesh_extra=(), estimate=False):
+    """[values] and [estimated errors] at each u0 (KEYS, ERR_KEYS), and
+    the DoFs and wall time of the run."""
+    mesh = "\n".join(f"  set {k} = {v}" for k, v in mesh_extra)
+    text = open(BASE).read() + SCENE_TEXT + f"""
+subsection Mesh
+  set Global refinements = {level}
+  set Nip fitting = {fitting}
+{mesh}
+end
+subsection Discretization
+  set Element = {element}
+end
+subsection Contact
+  set Mode = indentation
+  set Values = {', '.join(f'{v:g}' for v in U0)}
+  set Compare with linear theory = false
+  set Control tolerance = 1e-9
+  set Conformity tolerance = 1e-9
+end
+subsection Accuracy
+  set Error estimate = {'true' if estimate else 'false'}
+end
+subsection Output
+  set Directory = {tmp}/out
+  set Write VTU = false
+  set Print timing = false
+end
+"""
+    shutil.rmtree(os.path.join(tmp, "out"), ignore_errors=True)
+    prm = os.path.join(tmp, "run.prm")
+    with open(prm, "w") as f:
+        f.write(text)
+    t0 = time.perf_counter()
+    p = subprocess.run([ROLLNIP, prm], capture_output=True, text=True)
+    wall = time.perf_counter() - t0
+    if p.returncode != 0:
+        fail(f"{element} level {level} fitting {fitting} failed:\n"
+             + p.stderr[-2000:])
+    dofs = re.search(r"Mesh: \d+ cells, (\d+) DoFs", p.stdout)
+    with open(os.path.join(tmp, "out", "nip_characteristic.csv")) as f:
+        rows = list(csv.DictReader(f))
+    results = [[float(row[k]) for k in KEYS] for row in rows]
+    errors = [[float(row.get(k, "nan")) for k in ERR_KEYS] for row in rows]
+    if len(results) != len(U0):
+        fail(f"{element} level {level}: {len(results)} nips of {len(U0)}")
+    return results, errors, int(dofs.group(1)) if dofs else 0, wall
+
+
+def reference(tmp, levels):
+    """The reference runs (values only), cached in benchmarks/results by
+    scene, mesh and level: they take minutes and do not change."""
+    cache = os.path.join(ROOT, "benchmarks", "results",
+                         f"reference-{SCENE}-{REFERENCE}.json")
+    known = json.load(open(cache)) if os.path.exists(cache) else {}
+    key = ",".join(f"{u:g}" for u in U0)
+    out = []
+    for level in levels:
+        tag = f"{key}@{level}"
+        if tag not in known:
+            known[tag] = solve(tmp, "Q2-P1", level,
+                               "on" if REFERENCE == "fitted" else "off")[0]
+            os.makedirs(os.path.dirname(cache), exist_ok=True)
+            json.dump(known, open(cache, "w"))
+        out.append(known[tag])
+    return out
+
+
+def main():
+    args = [a for a in sys.argv[1:] if a != "--quick"]
+    quick = len(args) < len(sys.argv) - 1
+    extra = []
+    for a in args:
+        if "=" not in a:
+            fail(f"'{a}' is not KEY=VALUE")
+        k, _, v = a.partition("=")
+        extra.append((k.strip(), v.strip()))
+    if not os.access(ROLLNIP, os.X_OK):
+        fail(f"{ROLLNIP} not found; build it with: bash scripts/setup.sh")
+    ref_levels = [2] if quick else [2, 3]
+    header = ["scene", "element", "mesh", "level", "DoFs", "wall s", "u0 mm"]
+    for n in NAMES:
+        header += [f"{n} err", f"{n} est", f"{n} eff"]
+    rows = []
+    with tempfile.TemporaryDirectory(prefix="rollnip-accuracy.") as tmp:
+        refs = reference(tmp, ref_levels)
+        ref = refs[-1]
+        print(f"reference: Q2-P1, {REFERENCE} mesh, level {ref_levels[-1]}")
+        for u, r in zip(U0, ref):
+            print(f"  u0 = {u:g} mm: P = {r[0]:.8g} N/mm, b = {r[1]:.8g} mm,"
+                  f" peak = {r[2]:.8g} MPa, bond shear = {r[3]:.8g} MPa")
+        if len(refs) > 1:
+            for i, n in enumerate(NAMES):
+                change = max(abs(a[i] / b[i] - 1)
+                             for a, b in zip(refs[0], ref))
+                print(f"  largest change of {n} from level {ref_levels[0]}:"
+                      f" {change:.2e}")
+        runs = [("Q1-P0", "on", l) for l in (0, 1, 2)] + \
+               [("Q1-P0", "off", l) for l in (0, 1, 2)] + \
+               [("Q2-P1", "on", l) for l in (0, 1)]
+        for element, fitting, level in runs:
+            res, est, dofs, wall = solve(tmp, element, level, fitting,
+                                         extra if fitting == "on" else (),
+                                         estimate=True)
+            for u, r, e, q in zip(U0, res, est, ref):
+                row = [SCENE, element,
+                       "fitted" if fitting == "on" else "fixed", level, dofs,
+                       f"{wall:.2f}", f"{u:g}"]
+                for a, da, b in zip(r, e, q):
+                    true = abs(a / b - 1)
+                    rel = da / abs(b)
+                    row += [f"{a / b - 1:+.2e}", f"{rel:.2e}",
+                            f"{rel / true:.2f}" if true > 0 else "inf"]
+                rows.append(row)
+                print("| " + " | ".join(str(x) for x in row) + " |",
+                      flush=True)
+    print()
+    print("| " + " | ".join(header) + " |")
+    print("|" + "---|" * len(header))
+    for r in rows:
+        print("| " + " | ".join(str(x) for x in r) + " |")
+    os.makedirs(os.path.join(ROOT, "benchmarks", "results"), exist_ok=True)
+    out = os.path.join(ROOT, "benchmarks", "results",
+                       time.strftime(f"accuracy-reference-{SCENE}-%Y%m%d-%H%M%S.csv"))
+    with open(out, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(header)
+        w.writerows(rows)
+    print(f"\nwritten: {os.path.relpath(out, ROOT)}")
+
+
+if __name__ == "__main__":
+    main()
