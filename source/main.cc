@@ -4,6 +4,7 @@
 #include <rollnip/engineering_inputs.h>
 #include <rollnip/geometry/adaptive_grading.h>
 #include <rollnip/interrupt.h>
+#include <rollnip/mpi_start.h>
 #include <rollnip/parameters.h>
 #include <rollnip/problem.h>
 #include <rollnip/run_errors.h>
@@ -100,15 +101,19 @@ int
 main(int argc, char **argv)
 {
   using namespace rollnip;
+  // The command line is read before MPI starts: --help, --print-parameters
+  // and a wrong argument answer at once (MPI_Init leaves argv as it is).
+  std::string file;
+  bool        validate_only = false;
+  if (const int code =
+        parse_arguments(argc, argv, is_launch_root(), file, validate_only);
+      code >= 0)
+    return code;
+
+  prepare_single_process_mpi();
   // Threads fill the cores the MPI processes leave (DEAL_II_NUM_THREADS caps).
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-
-  std::string file;
-  bool        validate_only = false;
-  if (const int code = parse_arguments(argc, argv, root, file, validate_only);
-      code >= 0)
-    return code;
 
   install_interrupt_handlers();
   return run_guarded(root, [&]() {
