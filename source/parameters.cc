@@ -873,8 +873,8 @@ namespace rollnip
                          "u0, theta0, the nip width, the pressures and the "
                          "bond stresses, their estimated error from the "
                          "difference and the element's order of convergence "
-                         "(doc/accuracy.md); it costs about a third of the "
-                         "nip's solve");
+                         "(doc/accuracy.md); it costs a solve on a quarter "
+                         "of the cells (on four times the cells at level 0)");
       prm.leave_subsection();
     }
 

@@ -229,6 +229,7 @@ namespace rollnip
             e = estimate_errors(nip_numbers(row),
                                 nip_numbers(c),
                                 parameters.discretization.element,
+                                parameters.contact.mode,
                                 level,
                                 other);
           }
@@ -278,7 +279,9 @@ namespace rollnip
           return out.str();
         }
       out << "# estimated errors: "
-          << e.method(p.discretization.element, p.mesh.global_refinements)
+          << e.method(p.discretization.element,
+                      p.contact.mode,
+                      p.mesh.global_refinements)
           << '\n';
       for (unsigned int q = 0; q < NipQuantity::n_quantities; ++q)
         out << "estimated_error_" << NipQuantity::key(NipQuantity::Index(q))

@@ -48,7 +48,8 @@ namespace rollnip
    * error is Richardson's: |a - c| / (2^p - 1), with p the order at which
    * that number converges for the element (measured, error_order()). At
    * level 0 the companion is one level finer and the error of the answer
-   * is |a - c| 2^p / (2^p - 1).
+   * is |a - c| 2^p / (2^p - 1). The mean pressure P / 2b takes the sum of
+   * the relative errors of P and b.
    */
   struct ErrorEstimate
   {
@@ -66,24 +67,32 @@ namespace rollnip
 
     /// How the estimate was made, in one line.
     std::string
-    method(const Parameters::Element element, const unsigned int level) const;
+    method(const Parameters::Element     element,
+           const Parameters::ContactMode mode,
+           const unsigned int            level) const;
   };
 
   /// The order of convergence in the mesh size at which quantity @p q of a
-  /// nip converges with @p element on the builtin meshes (measured against
-  /// independent references, doc/accuracy.md).
+  /// nip converges with @p element on the builtin meshes when the nip is
+  /// controlled by @p mode (measured, doc/accuracy.md): with theta0
+  /// prescribed the nip's numbers follow the contact edge and converge at
+  /// first order; with P or u0 prescribed, P, u0 and the peak pressure
+  /// converge at second order.
   double
-  error_order(const Parameters::Element element, const NipQuantity::Index q);
+  error_order(const Parameters::Element     element,
+              const NipQuantity::Index      q,
+              const Parameters::ContactMode mode);
 
   /// The estimate of the errors of @p answer, solved at mesh level
   /// @p level, from @p companion, the same nip at @p companion_level
   /// (level - 1, or 1 at level 0).
   ErrorEstimate
-  estimate_errors(const NipNumbers         &answer,
-                  const NipNumbers         &companion,
-                  const Parameters::Element element,
-                  const unsigned int        level,
-                  const unsigned int        companion_level);
+  estimate_errors(const NipNumbers             &answer,
+                  const NipNumbers             &companion,
+                  const Parameters::Element     element,
+                  const Parameters::ContactMode mode,
+                  const unsigned int            level,
+                  const unsigned int            companion_level);
 } // namespace rollnip
 
 #endif
