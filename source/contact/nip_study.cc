@@ -143,13 +143,15 @@ namespace rollnip
     Parameters::AllParameters
     companion_parameters(const Parameters::AllParameters &p)
     {
-      auto other = [](const unsigned int level) {
-        return level > 0 ? level - 1 : level + 1;
-      };
-      Parameters::AllParameters c = p;
-      c.mesh.global_refinements   = other(p.mesh.global_refinements);
+      // One level coarser, or finer at level 0; the mating roll moves the
+      // same way as the roll (coarser only while it has a level to drop).
+      const unsigned int        level = p.mesh.global_refinements;
+      const bool                finer = level == 0;
+      const unsigned int        mate  = p.mating_roll.mesh.global_refinements;
+      Parameters::AllParameters c     = p;
+      c.mesh.global_refinements       = finer ? 1 : level - 1;
       c.mating_roll.mesh.global_refinements =
-        other(p.mating_roll.mesh.global_refinements);
+        finer ? mate + 1 : (mate > 0 ? mate - 1 : 0);
       c.contact.compare_linear  = false;
       c.output.print_timing     = false;
       c.output.write_vtu        = false;
