@@ -187,6 +187,13 @@ namespace rollnip
           }
         catch (const std::exception &e)
           {
+            // An error of one process (memory, files) ends the run as
+            // everywhere else; only what every process meets is skipped.
+            if (is_local_error(e))
+              {
+                release();
+                throw;
+              }
             unavailable = "the scene at mesh level " +
                           std::to_string(parameters.mesh.global_refinements) +
                           " cannot be built (" + one_line_message(e) + ")";
@@ -220,6 +227,8 @@ namespace rollnip
           }
         catch (const std::exception &error)
           {
+            if (is_local_error(error))
+              throw;
             r.converged = false;
             r.message   = one_line_message(error);
           }
