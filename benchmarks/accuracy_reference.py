@@ -15,8 +15,15 @@ estimated one and their ratio, the effectivity.
 
 Usage: [ROLLNIP_SCENE=run30|layered] [ROLLNIP_REFERENCE=fixed|fitted]
        python3 benchmarks/accuracy_reference.py
-           [--quick] [KEY=VALUE ...]
+           [--quick] [--front] [KEY=VALUE ...]
     --quick     reference at level 2 only (minutes less; for tuning)
+    --front     the speed-accuracy front instead: every element, mesh
+                (nip-fitted, fixed), level and control mode (indentation
+                at the reference's u0, load at its P, nip angle at its
+                theta0), timed without the error estimate, with the
+                largest true error of P, u0, b, the peak pressure and the
+                bond shear stress over the nips; writes the table as CSV
+                and doc-style figure data to benchmarks/results/
     KEY=VALUE   extra Mesh entries for the runs under test, e.g.
                 "Nip cells=6"
 
@@ -68,9 +75,18 @@ def fail(message):
     sys.exit(1)
 
 
-def solve(tmp, element, level, fitting, mesh_extra=(), estimate=False):
-    """[values] and [estimated errors] at each u0 (KEYS, ERR_KEYS), and
-    the DoFs and wall time of the run."""
+def solve(tmp, element, level, fitting, mesh_extra=(), estimate=False,
+          mode="indentation", values=None, keys=KEYS, tight=True,
+          must_converge=True):
+    """[values] and [estimated errors] at each target (keys, ERR_KEYS), and
+    the DoFs and wall time of the run. The targets are U0 unless given
+    (in the unit of the mode: mm, N/mm, deg); tight: control and
+    conformity tolerances 1e-9, otherwise the parameter file's. A run
+    that fails returns None for its values unless must_converge."""
+    values = U0 if values is None else values
+    tolerances = """
+  set Control tolerance = 1e-9
+  set Conformity tolerance = 1e-9""" if tight else ""
     mesh = "\n".join(f"  set {k} = {v}" for k, v in mesh_extra)
     text = open(BASE).read() + SCENE_TEXT + f"""
 subsection Mesh
@@ -82,11 +98,9 @@ subsection Discretization
   set Element = {element}
 end
 subsection Contact
-  set Mode = indentation
-  set Values = {', '.join(f'{v:g}' for v in U0)}
-  set Compare with linear theory = false
-  set Control tolerance = 1e-9
-  set Conformity tolerance = 1e-9
+  set Mode = {mode}
+  set Values = {', '.join(f'{v:.12g}' for v in values)}
+  set Compare with linear theory = false{tolerances}
 end
 subsection Accuracy
   set Error estimate = {'true' if estimate else 'false'}
@@ -105,40 +119,124 @@ end
     p = subprocess.run([ROLLNIP, prm], capture_output=True, text=True)
     wall = time.perf_counter() - t0
     if p.returncode != 0:
+        if not must_converge:
+            return None, None, 0, wall
         fail(f"{element} level {level} fitting {fitting} failed:\n"
              + p.stderr[-2000:])
     dofs = re.search(r"Mesh: \d+ cells, (\d+) DoFs", p.stdout)
     with open(os.path.join(tmp, "out", "nip_characteristic.csv")) as f:
         rows = list(csv.DictReader(f))
-    results = [[float(row[k]) for k in KEYS] for row in rows]
+    results = [[float(row[k]) for k in keys] for row in rows]
     errors = [[float(row.get(k, "nan")) for k in ERR_KEYS] for row in rows]
-    if len(results) != len(U0):
-        fail(f"{element} level {level}: {len(results)} nips of {len(U0)}")
+    if len(results) != len(values):
+        fail(f"{element} level {level}: {len(results)} nips of {len(values)}")
     return results, errors, int(dofs.group(1)) if dofs else 0, wall
 
 
-def reference(tmp, levels):
-    """The reference runs (values only), cached in benchmarks/results by
-    scene, mesh and level: they take minutes and do not change."""
+def reference(tmp, levels, keys=KEYS):
+    """The reference runs (values of keys only), cached in
+    benchmarks/results by scene, mesh, level and keys: they take minutes
+    and do not change."""
     cache = os.path.join(ROOT, "benchmarks", "results",
                          f"reference-{SCENE}-{REFERENCE}.json")
     known = json.load(open(cache)) if os.path.exists(cache) else {}
     key = ",".join(f"{u:g}" for u in U0)
     out = []
     for level in levels:
-        tag = f"{key}@{level}"
+        tag = f"{key}@{level}" + ("" if keys == KEYS else "/" + ",".join(keys))
         if tag not in known:
             known[tag] = solve(tmp, "Q2-P1", level,
-                               "on" if REFERENCE == "fitted" else "off")[0]
+                               "on" if REFERENCE == "fitted" else "off",
+                               keys=keys)[0]
             os.makedirs(os.path.dirname(cache), exist_ok=True)
             json.dump(known, open(cache, "w"))
         out.append(known[tag])
     return out
 
 
+# The speed-accuracy front (--front): the reference's columns, the
+# quantities whose errors it tabulates (indices into FRONT_KEYS), and the
+# control modes with the reference column each prescribes.
+FRONT_KEYS = ("theta0_deg", "P_N_per_mm", "u0_mm", "half_chord_mm",
+              "peak_pressure_MPa", "bond_sigma_rtheta_max_MPa")
+FRONT_NAMES = {1: "P", 2: "u0", 3: "b", 4: "peak", 5: "bond shear"}
+FRONT_MODES = {"indentation": 2, "load": 1, "nip angle": 0}
+
+
+def start_up_seconds():
+    """The wall time of a run that does no work (median of 3): the
+    shared libraries and the parameter declaration."""
+    times = []
+    for _ in range(3):
+        t0 = time.perf_counter()
+        subprocess.run([ROLLNIP, "--help"], capture_output=True)
+        times.append(time.perf_counter() - t0)
+    return sorted(times)[1]
+
+
+def front(tmp, ref_levels):
+    """Every element, mesh, level and mode against the reference: the
+    wall time per nip (start-up subtracted) and the largest relative error
+    of each quantity over the nips."""
+    refs = reference(tmp, ref_levels, FRONT_KEYS)
+    ref = refs[-1]
+    uncertainty = {i: max(abs(a[i] / b[i] - 1) for a, b in zip(refs[0], ref))
+                   for i in FRONT_NAMES} if len(refs) > 1 else {}
+    print(f"reference: Q2-P1, {REFERENCE} mesh, level {ref_levels[-1]};"
+          " its change from the level before: "
+          + ", ".join(f"{FRONT_NAMES[i]} {u:.1e}"
+                      for i, u in uncertainty.items()))
+    start = start_up_seconds()
+    print(f"start-up (rollnip --help, median of 3): {start:.2f} s")
+    runs = [("Q1-P0", f, l) for f in ("on", "off") for l in (0, 1, 2, 3)] + \
+           [("Q2-P1", f, l) for f in ("on", "off") for l in (0, 1, 2)]
+    header = ["scene", "mode", "element", "mesh", "level", "DoFs",
+              "s per nip"] + [f"{n} err" for n in FRONT_NAMES.values()]
+    print("| " + " | ".join(header) + " |")
+    print("|" + "---|" * len(header))
+    rows = []
+    for mode, column in FRONT_MODES.items():
+        targets = [r[column] for r in ref]
+        for element, fitting, level in runs:
+            res, _, dofs, wall = solve(tmp, element, level, fitting,
+                                       mode=mode, values=targets,
+                                       keys=FRONT_KEYS, tight=False,
+                                       must_converge=False)
+            row = [SCENE, mode, element,
+                   "fitted" if fitting == "on" else "fixed", level, dofs]
+            if res is None:  # a target the control did not reach
+                row += ["failed"] + ["-"] * len(FRONT_NAMES)
+            else:
+                row += [f"{max(wall - start, 0) / len(targets):.3f}"]
+                row += [f"{max(abs(a[i] / b[i] - 1) for a, b in zip(res, ref)):.1e}"
+                        for i in FRONT_NAMES]
+            rows.append(row)
+            print("| " + " | ".join(str(x) for x in row) + " |", flush=True)
+    return header, rows
+
+
+def write_csv(stem, header, rows):
+    """The table as benchmarks/results/STEM-<date>.csv."""
+    os.makedirs(os.path.join(ROOT, "benchmarks", "results"), exist_ok=True)
+    out = os.path.join(ROOT, "benchmarks", "results",
+                       time.strftime(f"{stem}-%Y%m%d-%H%M%S.csv"))
+    with open(out, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(header)
+        w.writerows(rows)
+    print(f"\nwritten: {os.path.relpath(out, ROOT)}")
+
+
 def main():
-    args = [a for a in sys.argv[1:] if a != "--quick"]
-    quick = len(args) < len(sys.argv) - 1
+    args = [a for a in sys.argv[1:] if a not in ("--quick", "--front")]
+    quick = "--quick" in sys.argv[1:]
+    if "--front" in sys.argv[1:]:
+        if not os.access(ROLLNIP, os.X_OK):
+            fail(f"{ROLLNIP} not found; build it with: bash scripts/setup.sh")
+        with tempfile.TemporaryDirectory(prefix="rollnip-front.") as tmp:
+            header, rows = front(tmp, [2] if quick else [2, 3])
+        write_csv(f"accuracy-front-{SCENE}", header, rows)
+        return
     extra = []
     for a in args:
         if "=" not in a:
@@ -189,14 +287,7 @@ def main():
     print("|" + "---|" * len(header))
     for r in rows:
         print("| " + " | ".join(str(x) for x in r) + " |")
-    os.makedirs(os.path.join(ROOT, "benchmarks", "results"), exist_ok=True)
-    out = os.path.join(ROOT, "benchmarks", "results",
-                       time.strftime(f"accuracy-reference-{SCENE}-%Y%m%d-%H%M%S.csv"))
-    with open(out, "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(header)
-        w.writerows(rows)
-    print(f"\nwritten: {os.path.relpath(out, ROOT)}")
+    write_csv(f"accuracy-reference-{SCENE}", header, rows)
 
 
 if __name__ == "__main__":
