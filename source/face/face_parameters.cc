@@ -1,5 +1,6 @@
 #include <rollnip/face/face_parameters.h>
 #include <rollnip/parameter_entries.h>
+#include <rollnip/parameters.h>
 
 #include <filesystem>
 
@@ -368,6 +369,16 @@ namespace rollnip
                   ExcMessage("Face/Mating crown/Shape = ideal needs Face/"
                              "Mating roll = beam (a rigid roll does not "
                              "bend)"));
+    }
+
+    void
+    Face::read(const std::string &filename)
+    {
+      ParameterHandler prm;
+      AllParameters::declare(prm);
+      prm.parse_input(filename);
+      parse(prm);
+      validate();
     }
   } // namespace Parameters
 } // namespace rollnip
