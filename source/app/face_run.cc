@@ -235,10 +235,10 @@ namespace rollnip
             << "contact_length_mm = " << f.contact_length << '\n'
             << "roll_centre_deflection_mm = " << s.roll_deflection(0) << '\n'
             << "mate_centre_deflection_mm = " << s.mate_deflection(0) << '\n'
-            << "roll_bearing_forces_N = " << s.roll_bearings[0] << ", "
-            << s.roll_bearings[1] << '\n'
-            << "mate_bearing_forces_N = " << s.mate_bearings[0] << ", "
-            << s.mate_bearings[1] << '\n'
+            << "roll_bearing_force_left_N = " << s.roll_bearings[0] << '\n'
+            << "roll_bearing_force_right_N = " << s.roll_bearings[1] << '\n'
+            << "mate_bearing_force_left_N = " << s.mate_bearings[0] << '\n'
+            << "mate_bearing_force_right_N = " << s.mate_bearings[1] << '\n'
             << "ideal_crown_on_diameter_mm = " << ideal_crown_on_diameter(m)
             << '\n'
             << "elements = " << m.elements << '\n'

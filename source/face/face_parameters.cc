@@ -1,3 +1,4 @@
+#include <rollnip/face/crown.h>
 #include <rollnip/face/face_parameters.h>
 #include <rollnip/parameter_entries.h>
 #include <rollnip/parameters.h>
@@ -325,9 +326,8 @@ namespace rollnip
       validate_crown(const FaceCrown &crown, const std::string &name)
       {
         if (crown.shape == CrownShape::table)
-          AssertThrow(std::filesystem::is_regular_file(crown.table_file),
-                      ExcMessage("Face/" + name + "/Table file '" +
-                                 crown.table_file + "' cannot be opened"));
+          rollnip::Face::read_crown_table(crown.table_file,
+                                          "Face/" + name + "/Table file");
         if (crown.shape == CrownShape::circular)
           AssertThrow(crown.amount != 0,
                       ExcMessage("Face/" + name +
