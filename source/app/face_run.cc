@@ -90,6 +90,20 @@ namespace rollnip
         model.face_length);
     }
 
+    /// The nip half-width b [mm] where the law carries @p line_load: the
+    /// length that scales the non-local foundation.
+    double
+    mean_half_width(const FoundationLaw &law, const double line_load)
+    {
+      double lo = 0, hi = law.largest_approach();
+      for (unsigned int i = 0; i < 200; ++i)
+        {
+          const double mid                      = (lo + hi) / 2;
+          (law.load(mid) < line_load ? lo : hi) = mid;
+        }
+      return law.half_width((lo + hi) / 2);
+    }
+
     FaceModel
     make_model(const Parameters::Face &face,
                const FoundationLaw    &law,
@@ -115,6 +129,9 @@ namespace rollnip
           ? roll_crown(face.mate_crown, m, m.mate, m.mate_beam_load)
           : make_crown(face.mate_crown, m.face_length);
       m.crown = [a, b](const double y) { return a(y) + b(y); };
+      if (face.nonlocal)
+        m.nonlocal_length =
+          face.nonlocal_factor * mean_half_width(law, force / m.face_length);
       return m;
     }
 
@@ -241,6 +258,7 @@ namespace rollnip
             << "mate_bearing_force_right_N = " << s.mate_bearings[1] << '\n'
             << "ideal_crown_on_diameter_mm = " << ideal_crown_on_diameter(m)
             << '\n'
+            << "nonlocal_length_mm = " << m.nonlocal_length << '\n'
             << "elements = " << m.elements << '\n'
             << "newton_iterations = " << s.iterations << '\n'
             << "face_solve_seconds = " << seconds << '\n';

@@ -118,6 +118,34 @@ namespace rollnip
       return w;
     }
 
+    void
+    add_beam_matrix(const FaceMesh                      &mesh,
+                    const BeamSection                   &section,
+                    const double                         load,
+                    const unsigned int                   offset,
+                    std::vector<Eigen::Triplet<double>> &entries,
+                    Eigen::VectorXd                     &forces)
+    {
+      for (unsigned int e = 0; e + 1 < mesh.n_nodes(); ++e)
+        {
+          const double          h = mesh.y[e + 1] - mesh.y[e];
+          const Eigen::Matrix4d k = element_stiffness(section, h);
+          // The fixed-end forces of a uniform load, shear or not.
+          const std::array<double, 4> f = {{load * h / 2,
+                                            load * h * h / 12,
+                                            load * h / 2,
+                                            -load * h * h / 12}};
+          for (unsigned int i = 0; i < 4; ++i)
+            {
+              forces[offset + 2 * e + i] += f[i];
+              for (unsigned int j = 0; j < 4; ++j)
+                entries.emplace_back(offset + 2 * e + i,
+                                     offset + 2 * e + j,
+                                     k(i, j));
+            }
+        }
+    }
+
     Eigen::VectorXd
     simply_supported_deflection(const FaceMesh    &mesh,
                                 const BeamSection &section,

@@ -360,6 +360,10 @@ namespace rollnip
       AssertThrow(!nonlocal || nonlocal_factor > 0,
                   ExcMessage("Face/Non-local length factor must be "
                              "positive"));
+      AssertThrow(!nonlocal || foundation == FaceFoundation::cross_section,
+                  ExcMessage("Face/Non-local cover ends needs Face/"
+                             "Foundation = cross-section (l is a multiple "
+                             "of the nip half-width)"));
       validate_core(roll_core, "Roll core");
       if (mate_is_beam)
         validate_core(mate_core, "Mating core");

@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <rollnip/face/face_solver.h>
+#include <rollnip/face/nonlocal_face.h>
 #include <rollnip/global.h>
 
 #include <Eigen/Sparse>
@@ -121,23 +122,7 @@ namespace rollnip
                            const double       load,
                            const unsigned int offset)
       {
-        for (unsigned int e = 0; e + 1 < mesh.n_nodes(); ++e)
-          {
-            const double                h = mesh.y[e + 1] - mesh.y[e];
-            const Eigen::Matrix4d       k = element_stiffness(section, h);
-            const std::array<double, 4> f = {{load * h / 2,
-                                              load * h * h / 12,
-                                              load * h / 2,
-                                              -load * h * h / 12}};
-            for (unsigned int i = 0; i < 4; ++i)
-              {
-                beam_loads[offset + 2 * e + i] += f[i];
-                for (unsigned int j = 0; j < 4; ++j)
-                  beam_entries.emplace_back(offset + 2 * e + i,
-                                            offset + 2 * e + j,
-                                            k(i, j));
-              }
-          }
+        add_beam_matrix(mesh, section, load, offset, beam_entries, beam_loads);
         supports.push_back(offset);
         supports.push_back(offset + 2 * (mesh.n_nodes() - 1));
       }
@@ -335,7 +320,17 @@ namespace rollnip
     double
     FaceSolution::line_load(const double y) const
     {
-      return model->law->load(approach_at(y));
+      if (nodal_line_load.size() == 0)
+        return model->law->load(approach_at(y));
+      // The non-local q: linear between the face nodes, 0 off the face.
+      const double L = model->face_length;
+      if (y < -L / 2 || y > L / 2)
+        return 0;
+      const unsigned int e =
+        std::min(mesh.element_at(y), mesh.last_face_node - 1);
+      const unsigned int k  = e - mesh.first_face_node;
+      const double       xi = (y - mesh.y[e]) / (mesh.y[e + 1] - mesh.y[e]);
+      return (1 - xi) * nodal_line_load[k] + xi * nodal_line_load[k + 1];
     }
 
     FaceSolution
@@ -382,6 +377,8 @@ namespace rollnip
       const auto f           = system.support_forces(x);
       solution.roll_bearings = {{-f[0], -f[1]}};
       solution.mate_bearings = {{-f[2], -f[3]}};
+      if (model.nonlocal_length > 0)
+        solve_nonlocal(model, solution);
       if (!model.mate_is_beam)
         {
           // A rigid mating roll: its bearings share the nip force by
@@ -389,7 +386,7 @@ namespace rollnip
           double force = 0, moment = 0;
           for (const FacePoint &p : system.points)
             {
-              const double q = model.law->load(solution.approach_at(p.y));
+              const double q = solution.line_load(p.y);
               force += p.weight * q;
               moment += p.weight * q * p.y;
             }

@@ -8,7 +8,11 @@
 // 4. the ideal crown at the design load makes q uniform to 0.1 %, less
 //    load leaves the centre heavy (over-crowned), more makes it light;
 // 5. a strongly crowned roll at a low load lifts off at the ends: q = 0
-//    there, and the bearings still carry the nip force.
+//    there, and the bearings still carry the nip force;
+// 6. the non-local foundation q - l^2 q'' = k delta on a stiff straight
+//    core: with delta = a uniform and q = 0 at the ends, q = k a (1 -
+//    cosh(y / l) / cosh(L / 2 l)), and int q = F gives a = F / (k (L -
+//    2 l tanh(L / 2 l))); q(0) and a converge to it at second order.
 #include <rollnip/face/beam.h>
 #include <rollnip/face/crown.h>
 #include <rollnip/face/face_solver.h>
@@ -210,6 +214,46 @@ namespace
     checker.check(std::abs(bearings / m.total_force - 1) < 1e-9,
                   "the bearings carry the nip force (" + num(bearings) + " N)");
   }
+
+  void
+  check_nonlocal(testing::Checker &checker)
+  {
+    std::cout << "6. The non-local foundation on a straight core" << std::endl;
+    const double           k = 100, l = 20;
+    const LinearFoundation law(k);
+    FaceModel              m = press(law);
+    // A core 1e8 times stiffer: it bends by 1e-9 mm, the foundation's
+    // approach is 0.2 mm.
+    m.roll.bending_stiffness *= 1e8;
+    m.roll.shear_stiffness *= 1e8;
+    m.nonlocal_length     = l;
+    const double        L = m.face_length, F = m.total_force;
+    const double        a  = F / (k * (L - 2 * l * std::tanh(L / (2 * l))));
+    const double        q0 = k * a * (1 - 1 / std::cosh(L / (2 * l)));
+    std::vector<double> errors;
+    for (const unsigned int n : {100u, 200u, 400u})
+      {
+        m.elements           = n;
+        const FaceSolution s = solve_face(m);
+        errors.push_back(std::max(std::abs(s.line_load(0) / q0 - 1),
+                                  std::abs(s.approach / a - 1)));
+        std::cout << "  " << n << " elements: q(0) = " << s.line_load(0)
+                  << " N/mm (closed form " << q0 << "), a = " << s.approach
+                  << " mm (" << a << "), q(L/2) = " << s.line_load(L / 2)
+                  << std::endl;
+        if (n == 400)
+          checker.check(s.line_load(L / 2) == 0 &&
+                          std::abs(
+                            (s.roll_bearings[0] + s.roll_bearings[1]) / F - 1) <
+                            1e-9,
+                        "q = 0 at the cover ends, and the bearings carry "
+                        "the nip force");
+      }
+    const double order = std::log2(errors[1] / errors[2]);
+    checker.check(errors.back() < 1e-4 && order > 1.8,
+                  "400 elements: within " + num(errors.back()) +
+                    " of the closed form, observed order " + num(order));
+  }
 } // namespace
 
 int
@@ -222,5 +266,6 @@ main()
   check_identical_rolls(checker, law);
   check_ideal_crown(checker, law);
   check_lift_off(checker, law);
+  check_nonlocal(checker);
   return checker.result();
 }

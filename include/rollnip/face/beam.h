@@ -4,6 +4,7 @@
 #include <rollnip/face/face_parameters.h>
 
 #include <Eigen/Dense>
+#include <Eigen/Sparse>
 
 #include <array>
 #include <vector>
@@ -86,6 +87,17 @@ namespace rollnip
                   const BeamSection     &section,
                   const Eigen::VectorXd &u,
                   const double           y0);
+
+    /// Adds the stiffness of a beam on @p mesh (dofs from @p offset) to
+    /// @p entries and the nodal forces of the line load @p load [N/mm]
+    /// along the whole beam to @p forces.
+    void
+    add_beam_matrix(const FaceMesh                      &mesh,
+                    const BeamSection                   &section,
+                    const double                         load,
+                    const unsigned int                   offset,
+                    std::vector<Eigen::Triplet<double>> &entries,
+                    Eigen::VectorXd                     &forces);
 
     /**
      * Nodal deflections of a beam simply supported at the mesh's first and
