@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <rollnip/app/face_run.h>
 #include <rollnip/contact/nip_study.h>
 #include <rollnip/engineering_inputs.h>
 #include <rollnip/geometry/adaptive_grading.h>
@@ -119,8 +120,12 @@ main(int argc, char **argv)
   return run_guarded(root, [&]() {
     Parameters::AllParameters parameters;
     parameters.read(file);
+    Parameters::Face face;
+    face.read(file);
     if (root)
       std::cout << EngineeringInputs::describe(parameters);
+    if (face.enabled && !validate_only)
+      return run_face(parameters, face);
     if (!parameters.study.levels.empty() && !validate_only)
       return run_refinement_study(parameters);
     if (!validate_only)

@@ -2,6 +2,7 @@
 
 #include <rollnip/cost_estimate.h>
 #include <rollnip/engineering_inputs.h>
+#include <rollnip/face/face_parameters.h>
 #include <rollnip/loading/pressure_load.h>
 #include <rollnip/parameter_entries.h>
 #include <rollnip/parameters.h>
@@ -903,6 +904,7 @@ namespace rollnip
       MatingRoll::declare(prm);
       Study::declare(prm);
       Accuracy::declare(prm);
+      Face::declare(prm);
     }
 
     void
