@@ -8,6 +8,7 @@
 #include <rollnip/parameters.h>
 #include <rollnip/problem.h>
 #include <rollnip/run_errors.h>
+#include <rollnip/scene/scene_builder.h>
 #include <rollnip/study/refinement_study.h>
 
 #include <iostream>
@@ -95,6 +96,65 @@ namespace
       }
     return -1;
   }
+
+  /// --validate: reads the file and builds and checks the roll's mesh;
+  /// nothing is solved.
+  int
+  validate(const rollnip::Parameters::AllParameters &parameters,
+           const std::string                        &file,
+           const bool                                root)
+  {
+    using namespace rollnip;
+    // Destroyed inside the handler when something throws, so that its
+    // timer does not report on an exception still in flight.
+    auto problem = std::make_unique<RollProblem>(parameters, MPI_COMM_WORLD);
+    try
+      {
+        problem->setup();
+      }
+    catch (...)
+      {
+        problem->silence_timer();
+        problem.reset();
+        throw;
+      }
+    if (root)
+      std::cout << "rollnip: '" << file << "' is valid" << std::endl;
+    problem->silence_timer();
+    return 0;
+  }
+
+  /// The follower-pressure run (Contact/Mode = none) of the scene of
+  /// @p parameters; returns the exit code.
+  int
+  run_pressure(const rollnip::Parameters::AllParameters &parameters,
+               const bool                                root)
+  {
+    using namespace rollnip;
+    // Destroyed inside the handler when something throws (see validate).
+    auto scene = std::make_unique<Scene>(parameters, MPI_COMM_WORLD);
+    try
+      {
+        RollProblem &problem = scene->roll();
+        RunStatus    status  = problem.run();
+        problem.write_results(status);
+        if (!status.converged)
+          {
+            if (root)
+              std::cerr << "rollnip: error: " << status.message
+                        << "; results of that state are in '"
+                        << parameters.output.directory << "'" << std::endl;
+            return 1;
+          }
+        return 0;
+      }
+    catch (...)
+      {
+        scene->silence_timers();
+        scene.reset();
+        throw;
+      }
+  }
 } // namespace
 
 int
@@ -121,44 +181,13 @@ main(int argc, char **argv)
     parameters.read(file);
     if (root)
       std::cout << EngineeringInputs::describe(parameters);
-    if (!parameters.study.levels.empty() && !validate_only)
+    if (validate_only)
+      return validate(parameters, file, root);
+    if (!parameters.study.levels.empty())
       return run_refinement_study(parameters);
-    if (!validate_only)
-      parameters = adapt_grading(parameters);
-    if (parameters.contact.mode != Parameters::ContactMode::none &&
-        !validate_only)
-      return run_nip_study(parameters);
-    // Destroyed inside the handler below when something throws, so that
-    // its timer does not report on an exception still in flight.
-    std::unique_ptr<RollProblem> problem =
-      std::make_unique<RollProblem>(parameters, MPI_COMM_WORLD);
-    try
-      {
-        problem->setup();
-        if (validate_only)
-          {
-            if (root)
-              std::cout << "rollnip: '" << file << "' is valid" << std::endl;
-            problem->silence_timer();
-            return 0;
-          }
-        RunStatus status = problem->run();
-        problem->write_results(status);
-        if (!status.converged)
-          {
-            if (root)
-              std::cerr << "rollnip: error: " << status.message
-                        << "; results of that state are in '"
-                        << parameters.output.directory << "'" << std::endl;
-            return 1;
-          }
-        return 0;
-      }
-    catch (...)
-      {
-        problem->silence_timer();
-        problem.reset();
-        throw;
-      }
+    const Parameters::AllParameters graded = adapt_grading(parameters);
+    if (graded.contact.mode != Parameters::ContactMode::none)
+      return run_nip_study(graded);
+    return run_pressure(graded, root);
   });
 }

@@ -4,14 +4,17 @@
 
 #include <deal.II/numerics/error_estimator.h>
 
-#include <rollnip/contact/nip_study.h>
+#include <rollnip/contact/nip_control.h>
+#include <rollnip/contact/nip_solver.h>
 #include <rollnip/geometry/adaptive_grading.h>
 #include <rollnip/geometry/roll_mesh.h>
 #include <rollnip/problem.h>
+#include <rollnip/scene/scene_builder.h>
 
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <memory>
 #include <numeric>
 
 namespace rollnip
@@ -89,6 +92,55 @@ namespace rollnip
     return result;
   }
 
+  namespace
+  {
+    /// Solves the scene of @p quiet, grading pass @p pass (the pressure,
+    /// or the first contact value on the scene's own nip solver, against
+    /// a covered mating roll too), and returns its adapted coarse widths.
+    std::vector<double>
+    graded_pass(const Parameters::AllParameters &quiet, const unsigned int pass)
+    {
+      // Destroyed inside the handler when something throws, so that its
+      // timer does not report on an exception in flight.
+      auto scene = std::make_unique<Scene>(quiet, MPI_COMM_WORLD);
+      try
+        {
+          RollProblem &problem = scene->roll();
+          problem.set_step_log(false);
+          std::string failure;
+          if (scene->has_nip_solver())
+            {
+              const ContactResult r =
+                solve_controlled_nip(scene->nip_solver(),
+                                     quiet,
+                                     quiet.contact.values[0]);
+              failure = r.converged ? "" : r.message;
+            }
+          else
+            {
+              const RunStatus status = problem.run();
+              failure                = status.converged ? "" : status.message;
+            }
+          AssertThrow(failure.empty(),
+                      ExcMessage("Mesh/Adaptive grading passes: the solve of "
+                                 "pass " +
+                                 std::to_string(pass) + " failed: " + failure));
+          const std::vector<double> steps =
+            adapted_circumferential_steps(problem,
+                                          quiet.mesh.circumferential_steps,
+                                          quiet.geometry.sector_angle);
+          scene->silence_timers();
+          return steps;
+        }
+      catch (...)
+        {
+          scene->silence_timers();
+          scene.reset();
+          throw;
+        }
+    }
+  } // namespace
+
   Parameters::AllParameters
   adapt_grading(const Parameters::AllParameters &parameters)
   {
@@ -108,40 +160,13 @@ namespace rollnip
     for (unsigned int pass = 1; pass <= parameters.mesh.adaptive_passes; ++pass)
       {
         quiet.mesh.circumferential_steps = p.mesh.circumferential_steps;
-        RollProblem problem(quiet, MPI_COMM_WORLD);
-        problem.setup();
-        problem.set_step_log(false);
-        if (quiet.contact.mode != Parameters::ContactMode::none)
-          {
-            InverseContact      contact(problem, quiet);
-            const ContactResult r =
-              solve_controlled_nip(contact, quiet, quiet.contact.values[0]);
-            AssertThrow(r.converged,
-                        ExcMessage("Mesh/Adaptive grading passes: the solve of "
-                                   "pass " +
-                                   std::to_string(pass) +
-                                   " failed: " + r.message));
-          }
-        else
-          {
-            const RunStatus status = problem.run();
-            AssertThrow(status.converged,
-                        ExcMessage("Mesh/Adaptive grading passes: the solve of "
-                                   "pass " +
-                                   std::to_string(pass) +
-                                   " failed: " + status.message));
-          }
-        p.mesh.circumferential_steps =
-          adapted_circumferential_steps(problem,
-                                        p.mesh.circumferential_steps,
-                                        p.geometry.sector_angle);
-        const auto &w = p.mesh.circumferential_steps;
+        p.mesh.circumferential_steps     = graded_pass(quiet, pass);
+        const auto &w                    = p.mesh.circumferential_steps;
         pcout << "Adaptive grading, pass " << pass << ": coarse cells from "
               << std::setprecision(3) << w.front() * 180 / numbers::PI
               << " deg at the line of centres to "
               << *std::max_element(w.begin(), w.end()) * 180 / numbers::PI
               << " deg (widest)" << std::endl;
-        problem.silence_timer();
       }
     return p;
   }

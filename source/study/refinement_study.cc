@@ -9,6 +9,7 @@
 #include <rollnip/output/atomic_file.h>
 #include <rollnip/problem.h>
 #include <rollnip/run_errors.h>
+#include <rollnip/scene/scene_builder.h>
 #include <rollnip/study/refinement_study.h>
 
 #include <chrono>
@@ -16,6 +17,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 namespace rollnip
@@ -121,11 +123,13 @@ namespace rollnip
                              r.bond_sigma_rtheta_max};
           return 0;
         }
-      RollProblem problem(p, MPI_COMM_WORLD);
+      // Destroyed inside the handler when something throws, so that its
+      // timer does not report on an exception in flight.
+      auto scene = std::make_unique<Scene>(p, MPI_COMM_WORLD);
       try
         {
-          problem.setup();
-          const RunStatus status = problem.run();
+          RollProblem    &problem = scene->roll();
+          const RunStatus status  = problem.run();
           problem.write_results(status);
           if (!status.converged)
             {
@@ -144,7 +148,8 @@ namespace rollnip
         }
       catch (...)
         {
-          problem.silence_timer();
+          scene->silence_timers();
+          scene.reset();
           throw;
         }
       return 0;

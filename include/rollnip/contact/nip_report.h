@@ -3,6 +3,7 @@
 
 #include <rollnip/contact/nip_study.h>
 #include <rollnip/parameters.h>
+#include <rollnip/scene/scene_description.h>
 
 #include <string>
 #include <vector>
@@ -18,11 +19,13 @@ namespace rollnip
    * The nip report (doc/engineering_inputs.md, section 4): per nip the
    * line load in Contact/Load unit, the full nip width 2b, u0, peak and
    * mean pressure, the dwell time at Contact/Surface speed and the modulus
-   * used, printed and written to @p top/nip_report.csv by rank 0.
+   * used (of the rolls of @p scene), printed and written to
+   * @p top/nip_report.csv by rank 0.
    */
   void
   write_nip_report(const std::vector<NipRow>       &rows,
                    const Parameters::AllParameters &parameters,
+                   const SceneDescription          &scene,
                    const std::string               &top);
 } // namespace rollnip
 

@@ -32,12 +32,6 @@ namespace rollnip
   NipNumbers
   nip_numbers(const NipRow &row);
 
-  /// The contact solver of the scene: InverseContact against the rigid
-  /// indenter, or TwoRollContact against a covered mating roll.
-  std::unique_ptr<NipSolver>
-  make_nip_solver(RollProblem                     &roll,
-                  const Parameters::AllParameters &parameters);
-
   /**
    * Runs the contact scenes of the Contact subsection (doc/intro.md,
    * section 7): for each of Contact/Values, the nip controlled by theta0,
