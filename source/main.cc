@@ -1,15 +1,14 @@
 #include <deal.II/base/mpi.h>
 
-#include <rollnip/contact/nip_study.h>
+#include <rollnip/app/adaptive_grading.h>
+#include <rollnip/app/nip_study.h>
+#include <rollnip/app/pressure_run.h>
+#include <rollnip/app/refinement_study.h>
 #include <rollnip/engineering_inputs.h>
-#include <rollnip/geometry/adaptive_grading.h>
 #include <rollnip/interrupt.h>
 #include <rollnip/mpi_start.h>
 #include <rollnip/parameters.h>
-#include <rollnip/problem.h>
 #include <rollnip/run_errors.h>
-#include <rollnip/scene/scene_builder.h>
-#include <rollnip/study/refinement_study.h>
 
 #include <iostream>
 #include <memory>
@@ -96,65 +95,6 @@ namespace
       }
     return -1;
   }
-
-  /// --validate: reads the file and builds and checks the roll's mesh;
-  /// nothing is solved.
-  int
-  validate(const rollnip::Parameters::AllParameters &parameters,
-           const std::string                        &file,
-           const bool                                root)
-  {
-    using namespace rollnip;
-    // Destroyed inside the handler when something throws, so that its
-    // timer does not report on an exception still in flight.
-    auto problem = std::make_unique<RollProblem>(parameters, MPI_COMM_WORLD);
-    try
-      {
-        problem->setup();
-      }
-    catch (...)
-      {
-        problem->silence_timer();
-        problem.reset();
-        throw;
-      }
-    if (root)
-      std::cout << "rollnip: '" << file << "' is valid" << std::endl;
-    problem->silence_timer();
-    return 0;
-  }
-
-  /// The follower-pressure run (Contact/Mode = none) of the scene of
-  /// @p parameters; returns the exit code.
-  int
-  run_pressure(const rollnip::Parameters::AllParameters &parameters,
-               const bool                                root)
-  {
-    using namespace rollnip;
-    // Destroyed inside the handler when something throws (see validate).
-    auto scene = std::make_unique<Scene>(parameters, MPI_COMM_WORLD);
-    try
-      {
-        RollProblem &problem = scene->roll();
-        RunStatus    status  = problem.run();
-        problem.write_results(status);
-        if (!status.converged)
-          {
-            if (root)
-              std::cerr << "rollnip: error: " << status.message
-                        << "; results of that state are in '"
-                        << parameters.output.directory << "'" << std::endl;
-            return 1;
-          }
-        return 0;
-      }
-    catch (...)
-      {
-        scene->silence_timers();
-        scene.reset();
-        throw;
-      }
-  }
 } // namespace
 
 int
@@ -173,7 +113,9 @@ main(int argc, char **argv)
   prepare_single_process_mpi();
   // Threads fill the cores the MPI processes leave (DEAL_II_NUM_THREADS caps).
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
-  const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  // The processes of every run: the application passes them down.
+  const MPI_Comm communicator = MPI_COMM_WORLD;
+  const bool     root = Utilities::MPI::this_mpi_process(communicator) == 0;
 
   install_interrupt_handlers();
   return run_guarded(root, [&]() {
@@ -182,12 +124,13 @@ main(int argc, char **argv)
     if (root)
       std::cout << EngineeringInputs::describe(parameters);
     if (validate_only)
-      return validate(parameters, file, root);
+      return validate_mesh(parameters, file, communicator);
     if (!parameters.study.levels.empty())
-      return run_refinement_study(parameters);
-    const Parameters::AllParameters graded = adapt_grading(parameters);
+      return run_refinement_study(parameters, communicator);
+    const Parameters::AllParameters graded =
+      adapt_grading(parameters, communicator);
     if (graded.contact.mode != Parameters::ContactMode::none)
-      return run_nip_study(graded);
-    return run_pressure(graded, root);
+      return run_nip_study(graded, communicator);
+    return run_pressure(graded, communicator);
   });
 }

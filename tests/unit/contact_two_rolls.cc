@@ -27,9 +27,11 @@
 //     0.46 % at 2 deg); the finite-strain solver on the same scene lies
 //     within 1 % of Hertz at 4 and 2 deg, closer at 2.
 
+#include <rollnip/contact/inverse_contact.h>
+#include <rollnip/contact/nip_control.h>
 #include <rollnip/contact/nip_estimates.h>
-#include <rollnip/contact/nip_study.h>
 #include <rollnip/contact/two_roll_contact.h>
+#include <rollnip/problem.h>
 #include <rollnip/scene/scene_builder.h>
 
 #include "hertz_comparison.h"

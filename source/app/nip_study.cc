@@ -1,12 +1,12 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
+#include <rollnip/app/nip_report.h>
+#include <rollnip/app/nip_study.h>
 #include <rollnip/boundary_ids.h>
 #include <rollnip/contact/counter_surface.h>
 #include <rollnip/contact/nip_control.h>
 #include <rollnip/contact/nip_estimates.h>
-#include <rollnip/contact/nip_report.h>
-#include <rollnip/contact/nip_study.h>
 #include <rollnip/geometry/angles.h>
 #include <rollnip/interrupt.h>
 #include <rollnip/material/material_table.h>
@@ -51,7 +51,7 @@ namespace rollnip
                      const std::string   &dir)
     {
       const SurfaceData data = scene.roll().surface_data(1.);
-      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+      if (Utilities::MPI::this_mpi_process(scene.roll().communicator()) != 0)
         return;
       if (scene.rigid_counter_surface())
         {
@@ -109,7 +109,8 @@ namespace rollnip
     void
     evaluate_nip(const Scene &nonlinear, const unsigned int n, NipRow &row)
     {
-      const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      const bool root =
+        Utilities::MPI::this_mpi_process(nonlinear.roll().communicator()) == 0;
       ConditionalOStream pcout(std::cout, root);
       fill_nip_values(nonlinear, row);
       const double difference =
@@ -167,14 +168,15 @@ namespace rollnip
       /// Builds the companion scene; one it cannot build (a mesh level
       /// that cannot hold the nip, say) leaves every nip without an
       /// estimate, and says why, instead of stopping the run.
-      explicit ErrorCompanion(const Parameters::AllParameters &p)
+      ErrorCompanion(const Parameters::AllParameters &p,
+                     const MPI_Comm                   communicator)
           : parameters(companion_parameters(p))
           , level(p.mesh.global_refinements)
       {
         SilenceStream quiet(std::cout);
         try
           {
-            scene = std::make_unique<Scene>(parameters, MPI_COMM_WORLD);
+            scene = std::make_unique<Scene>(parameters, communicator);
             control =
               std::make_unique<NipControl>(scene->nip_solver(), parameters);
           }
@@ -295,9 +297,11 @@ namespace rollnip
 
     /// Nip @p n's estimated errors on the screen, relative, in one line.
     void
-    print_error_estimate(const NipRow &row, const unsigned int n)
+    print_error_estimate(const NipRow      &row,
+                         const unsigned int n,
+                         const MPI_Comm     communicator)
     {
-      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+      if (Utilities::MPI::this_mpi_process(communicator) != 0)
         return;
       const ErrorEstimate &e = row.error;
       if (!e.available)
@@ -336,7 +340,7 @@ namespace rollnip
     {
       // A linear companion that failed is said once; its columns are nan.
       if (linear_companion && !result.converged &&
-          Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+          Utilities::MPI::this_mpi_process(problem.communicator()) == 0)
         std::cout << "The linear companion in " << dir << " did not converge ("
                   << result.message << "); its columns are nan" << std::endl;
       RunStatus status;
@@ -384,9 +388,10 @@ namespace rollnip
     why_stopped(const std::string &message,
                 const unsigned int n,
                 const std::size_t  total,
-                const std::size_t  converged)
+                const std::size_t  converged,
+                const MPI_Comm     communicator)
     {
-      if (!interrupt_requested(MPI_COMM_WORLD))
+      if (!interrupt_requested(communicator))
         return message;
       return interrupt_message() + " during nip " + std::to_string(n) + " of " +
              std::to_string(total) + "; " + std::to_string(converged) +
@@ -400,9 +405,10 @@ namespace rollnip
     write_nip_characteristic(const std::vector<NipRow> &rows,
                              const bool                 with_linear,
                              const double               cover_thickness,
-                             const std::string         &top)
+                             const std::string         &top,
+                             const MPI_Comm             communicator)
     {
-      const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
       ConditionalOStream pcout(std::cout, root);
       // A linear companion that did not converge has no value to show.
       auto linear_value = [with_linear](const NipRow &r, const double v) {
@@ -534,7 +540,7 @@ namespace rollnip
               if (companion)
                 {
                   row.error = companion->estimate(row, values[n]);
-                  print_error_estimate(row, n + 1);
+                  print_error_estimate(row, n + 1, nonlinear.communicator());
                 }
             }
           nonlinear.set_output_directory(dir);
@@ -558,7 +564,8 @@ namespace rollnip
             return why_stopped(row.nonlinear.message,
                                n + 1,
                                values.size(),
-                               rows.size());
+                               rows.size(),
+                               nonlinear.communicator());
 
           if (linear_scene)
             {
@@ -596,19 +603,18 @@ namespace rollnip
                  const std::string               &failure,
                  const Parameters::AllParameters &parameters,
                  const SceneDescription          &scene,
-                 std::vector<NipRow>             *rows_out)
+                 std::vector<NipRow>             *rows_out,
+                 const MPI_Comm                   communicator)
     {
       const std::string &top = parameters.output.directory;
-      write_nip_characteristic(rows,
-                               with_linear,
-                               scene.roll.cover_thickness(),
-                               top);
-      write_nip_report(rows, parameters, scene, top);
+      write_nip_characteristic(
+        rows, with_linear, scene.roll.cover_thickness(), top, communicator);
+      write_nip_report(rows, parameters, scene, top, communicator);
       if (rows_out)
         *rows_out = rows;
       if (!failure.empty())
         {
-          if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+          if (Utilities::MPI::this_mpi_process(communicator) == 0)
             std::cerr << "rollnip: error: contact: " << failure
                       << "; the files in '" << top
                       << "' hold the last converged nip (contact.txt: the "
@@ -638,6 +644,7 @@ namespace rollnip
 
   int
   run_nip_study(const Parameters::AllParameters &parameters,
+                const MPI_Comm                   communicator,
                 std::vector<NipRow>             *rows_out)
   {
     std::vector<NipRow> rows;
@@ -654,14 +661,15 @@ namespace rollnip
     std::unique_ptr<ErrorCompanion> companion;
     try
       {
-        scene = std::make_unique<Scene>(parameters, MPI_COMM_WORLD);
+        scene = std::make_unique<Scene>(parameters, communicator);
         NipControl control(scene->nip_solver(), parameters);
         if (parameters.contact.compare_linear)
-          linear = std::make_unique<Scene>(linear_parameters, MPI_COMM_WORLD);
+          linear = std::make_unique<Scene>(linear_parameters, communicator);
 
         // The error estimate's companion (Accuracy/Error estimate).
         if (parameters.accuracy.error_estimate)
-          companion = std::make_unique<ErrorCompanion>(parameters);
+          companion =
+            std::make_unique<ErrorCompanion>(parameters, communicator);
 
         failure = sweep_nips(
           *scene, control, linear.get(), companion.get(), parameters, rows);
@@ -679,7 +687,12 @@ namespace rollnip
         throw;
       }
 
-    return finish_sweep(
-      rows, with_linear, failure, parameters, scene->description, rows_out);
+    return finish_sweep(rows,
+                        with_linear,
+                        failure,
+                        parameters,
+                        scene->description,
+                        rows_out,
+                        communicator);
   }
 } // namespace rollnip

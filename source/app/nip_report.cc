@@ -1,6 +1,6 @@
 #include <deal.II/base/mpi.h>
 
-#include <rollnip/contact/nip_report.h>
+#include <rollnip/app/nip_report.h>
 #include <rollnip/output/atomic_file.h>
 
 #include <cmath>
@@ -172,9 +172,10 @@ namespace rollnip
   write_nip_report(const std::vector<NipRow>       &rows,
                    const Parameters::AllParameters &parameters,
                    const SceneDescription          &scene,
-                   const std::string               &top)
+                   const std::string               &top,
+                   const MPI_Comm                   communicator)
   {
-    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+    if (Utilities::MPI::this_mpi_process(communicator) != 0)
       return;
     std::vector<ReportRow> report;
     for (const auto &r : rows)
