@@ -5,6 +5,7 @@
 #include <rollnip/material/hardness.h>
 #include <rollnip/material/material_table.h>
 #include <rollnip/parameter_entries.h>
+#include <rollnip/scene/scene_description.h>
 
 #include <cmath>
 #include <iomanip>
@@ -300,19 +301,20 @@ namespace rollnip
           << p.geometry.outer_radius - p.geometry.inner_radius
           << " mm: R0 = " << p.geometry.outer_radius
           << " mm, R1 = " << p.geometry.inner_radius << " mm\n";
-      if (p.material.hardness_modulus > 0)
+      const RollDescription roll =
+        describe_roll(p.geometry, p.mesh, p.material);
+      if (roll.modulus_from_hardness())
         {
-          const MaterialTable layers(p.material);
-          s << "Material: " << p.material.hardness_description << ":";
-          for (unsigned int j = 0; j < layers.n_layers(); ++j)
+          const auto &layers = roll.layers;
+          s << "Material: " << roll.hardness_source << ":";
+          for (unsigned int j = 0; j < layers.size(); ++j)
             s << (j ? ";" : "")
-              << (layers.n_layers() > 1 ? " layer " + std::to_string(j + 1)
-                                        : std::string())
-              << " E = " << 3 * layers[j].shear_modulus()
+              << (layers.size() > 1 ? " layer " + std::to_string(j + 1)
+                                    : std::string())
+              << " E = " << layers[j].youngs_modulus()
               << " MPa (an estimate from hardness), G = E/3 = "
-              << layers[j].shear_modulus()
-              << " MPa, C1 = " << p.material.layer_C1[j]
-              << " MPa, C2 = " << p.material.layer_C2[j] << " MPa";
+              << layers[j].shear_modulus() << " MPa, C1 = " << layers[j].C1
+              << " MPa, C2 = " << layers[j].C2 << " MPa";
           s << '\n';
         }
       const auto &c = p.contact;
@@ -334,13 +336,16 @@ namespace rollnip
     std::string
     summary_entries(const Parameters::AllParameters &p)
     {
-      const double       G = surface_shear_modulus(p.material);
-      std::ostringstream s;
-      s << std::setprecision(8) << "shear_modulus_G_MPa = " << G << '\n'
-        << "youngs_modulus_E_MPa = " << 3 * G << '\n'
+      const RollDescription roll =
+        describe_roll(p.geometry, p.mesh, p.material);
+      const LayerDescription &surface = roll.surface_layer();
+      std::ostringstream      s;
+      s << std::setprecision(8)
+        << "shear_modulus_G_MPa = " << surface.shear_modulus() << '\n'
+        << "youngs_modulus_E_MPa = " << surface.youngs_modulus() << '\n'
         << "modulus_source = "
-        << (p.material.hardness_modulus > 0
-              ? "estimate from hardness " + p.material.hardness_description
+        << (roll.modulus_from_hardness()
+              ? "estimate from hardness " + roll.hardness_source
               : std::string("C1, C2"))
         << '\n'
         << "line_load_unit = " << p.contact.load_unit.name << '\n';

@@ -1,15 +1,15 @@
 #include <deal.II/base/mpi.h>
 
+#include <rollnip/app/adaptive_grading.h>
 #include <rollnip/app/face_run.h>
-#include <rollnip/contact/nip_study.h>
+#include <rollnip/app/nip_study.h>
+#include <rollnip/app/pressure_run.h>
+#include <rollnip/app/refinement_study.h>
 #include <rollnip/engineering_inputs.h>
-#include <rollnip/geometry/adaptive_grading.h>
 #include <rollnip/interrupt.h>
 #include <rollnip/mpi_start.h>
 #include <rollnip/parameters.h>
-#include <rollnip/problem.h>
 #include <rollnip/run_errors.h>
-#include <rollnip/study/refinement_study.h>
 
 #include <iostream>
 #include <memory>
@@ -114,7 +114,9 @@ main(int argc, char **argv)
   prepare_single_process_mpi();
   // Threads fill the cores the MPI processes leave (DEAL_II_NUM_THREADS caps).
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
-  const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  // The processes of every run: the application passes them down.
+  const MPI_Comm communicator = MPI_COMM_WORLD;
+  const bool     root = Utilities::MPI::this_mpi_process(communicator) == 0;
 
   install_interrupt_handlers();
   return run_guarded(root, [&]() {
@@ -125,45 +127,15 @@ main(int argc, char **argv)
     if (root)
       std::cout << EngineeringInputs::describe(parameters);
     if (face.enabled && !validate_only)
-      return run_face(parameters, face);
-    if (!parameters.study.levels.empty() && !validate_only)
-      return run_refinement_study(parameters);
-    if (!validate_only)
-      parameters = adapt_grading(parameters);
-    if (parameters.contact.mode != Parameters::ContactMode::none &&
-        !validate_only)
-      return run_nip_study(parameters);
-    // Destroyed inside the handler below when something throws, so that
-    // its timer does not report on an exception still in flight.
-    std::unique_ptr<RollProblem> problem =
-      std::make_unique<RollProblem>(parameters, MPI_COMM_WORLD);
-    try
-      {
-        problem->setup();
-        if (validate_only)
-          {
-            if (root)
-              std::cout << "rollnip: '" << file << "' is valid" << std::endl;
-            problem->silence_timer();
-            return 0;
-          }
-        RunStatus status = problem->run();
-        problem->write_results(status);
-        if (!status.converged)
-          {
-            if (root)
-              std::cerr << "rollnip: error: " << status.message
-                        << "; results of that state are in '"
-                        << parameters.output.directory << "'" << std::endl;
-            return 1;
-          }
-        return 0;
-      }
-    catch (...)
-      {
-        problem->silence_timer();
-        problem.reset();
-        throw;
-      }
+      return run_face(parameters, face, communicator);
+    if (validate_only)
+      return validate_mesh(parameters, file, communicator);
+    if (!parameters.study.levels.empty())
+      return run_refinement_study(parameters, communicator);
+    const Parameters::AllParameters graded =
+      adapt_grading(parameters, communicator);
+    if (graded.contact.mode != Parameters::ContactMode::none)
+      return run_nip_study(graded, communicator);
+    return run_pressure(graded, communicator);
   });
 }

@@ -780,12 +780,11 @@ namespace rollnip
       mate.material      = mating_roll.material;
       mate.mesh          = mating_roll.mesh;
       // One theory for both rolls (the linear companion switches both).
-      mate.material.theory         = material.theory;
-      mate.mating_roll.covered     = false;
-      mate.contact.indenter_radius = geometry.outer_radius;
-      mate.contact.compare_linear  = false;
-      mate.output.directory        = output.directory + "/mating_roll";
-      mate.output.print_timing     = false;
+      mate.material.theory        = material.theory;
+      mate.mating_roll.covered    = false;
+      mate.contact.compare_linear = false;
+      mate.output.directory       = output.directory + "/mating_roll";
+      mate.output.print_timing    = false;
       return mate;
     }
 
@@ -936,7 +935,6 @@ namespace rollnip
                       ExcMessage("Mating roll/Material/Theory differs from "
                                  "Material/Theory: both rolls take one "
                                  "theory"));
-          contact.indenter_radius = mating_roll.geometry.outer_radius;
         }
     }
 

@@ -1,8 +1,8 @@
 #include <deal.II/base/mpi.h>
 
+#include <rollnip/app/cross_section_law.h>
 #include <rollnip/app/face_run.h>
 #include <rollnip/contact/nip_report.h>
-#include <rollnip/face/cross_section_law.h>
 #include <rollnip/face/crown.h>
 #include <rollnip/face/face_solver.h>
 #include <rollnip/output/atomic_file.h>
@@ -48,7 +48,8 @@ namespace rollnip
     Foundation
     make_foundation(const Parameters::AllParameters &parameters,
                     const Parameters::Face          &face,
-                    const double                     line_load)
+                    const double                     line_load,
+                    MPI_Comm                         communicator)
     {
       Foundation f;
       if (face.foundation == Parameters::FaceFoundation::linear)
@@ -56,11 +57,11 @@ namespace rollnip
           f.law = std::make_unique<LinearFoundation>(face.foundation_stiffness);
           return f;
         }
-      f.samples =
-        cross_section_law(parameters,
-                          face,
-                          law_approaches(parameters, face, line_load));
-      f.law = std::make_unique<SampledLaw>(f.samples.approach,
+      f.samples = cross_section_law(parameters,
+                                    face,
+                                    law_approaches(parameters, face, line_load),
+                                    communicator);
+      f.law     = std::make_unique<SampledLaw>(f.samples.approach,
                                            f.samples.line_load,
                                            f.samples.half_width,
                                            f.samples.peak_pressure);
@@ -334,17 +335,18 @@ namespace rollnip
   run_face(const Parameters::AllParameters &parameters,
            const Parameters::Face          &face)
   {
-    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
     const std::string &dir = parameters.output.directory;
     const double       force =
       total_force(face, tube_section(face.roll_core, face.shear_deformation));
     double design = force / face.face_length;
     for (const auto *crown : {&face.roll_crown, &face.mate_crown})
       design = std::max(design, crown->design_line_load);
-    const Foundation   foundation = make_foundation(parameters, face, design);
-    const FaceModel    model      = make_model(face, *foundation.law, force);
-    const auto         start      = std::chrono::steady_clock::now();
-    const FaceSolution solution   = solve_face(model);
+    const Foundation foundation =
+      make_foundation(parameters, face, design, communicator);
+    const FaceModel    model    = make_model(face, *foundation.law, force);
+    const auto         start    = std::chrono::steady_clock::now();
+    const FaceSolution solution = solve_face(model);
     const double       seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
         .count();

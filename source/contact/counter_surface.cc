@@ -198,4 +198,14 @@ namespace rollnip
       return std::make_unique<RigidCircle>(outer_radius, radius);
     return std::make_unique<FlatPlane>(outer_radius);
   }
+
+  std::unique_ptr<CounterSurface>
+  make_counter_surface(const SceneDescription &scene)
+  {
+    AssertThrow(scene.covered_mate() == nullptr,
+                ExcMessage("the counter surface of a covered mating roll is "
+                           "its deformed surface, not a rigid one"));
+    return make_counter_surface(scene.roll.outer_radius(),
+                                scene.counter_radius());
+  }
 } // namespace rollnip

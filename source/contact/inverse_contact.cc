@@ -57,19 +57,19 @@ namespace rollnip
 
   InverseContact::InverseContact(ContactBody                     &body,
                                  const Parameters::AllParameters &parameters)
-      : InverseContact(body,
-                       parameters,
-                       make_counter_surface(parameters.geometry.outer_radius,
-                                            parameters.contact.indenter_radius))
+      : InverseContact(body, parameters, describe_scene(parameters), nullptr)
   {}
 
   InverseContact::InverseContact(
     ContactBody                          &body,
     const Parameters::AllParameters      &parameters,
+    const SceneDescription               &description,
     std::shared_ptr<const CounterSurface> counter_surface)
       : body(body)
       , parameters(parameters)
-      , counter_surface(std::move(counter_surface))
+      , description(description)
+      , counter_surface(counter_surface ? std::move(counter_surface)
+                                        : make_counter_surface(description))
       , pcout(std::cout,
               Utilities::MPI::this_mpi_process(body.communicator()) == 0)
       , conformity_tolerance(
@@ -181,9 +181,9 @@ namespace rollnip
     // cylinders (the mating one rigid or covered).
     const double half_width =
       parameters.geometry.outer_radius * std::sin(zone.theta0);
-    const double p_hertz = NipEstimates::contact_modulus(parameters) *
+    const double p_hertz = NipEstimates::contact_modulus(description) *
                            half_width /
-                           (2 * NipEstimates::effective_radius(parameters));
+                           (2 * NipEstimates::effective_radius(description));
     iterate.a.assign(zone.m, 0.);
     iterate.f_from.assign(zone.m, 0.);
     for (unsigned int k = 0; k < zone.m; ++k)

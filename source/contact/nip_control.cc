@@ -36,17 +36,18 @@ namespace rollnip
   NipControl::first_guess(const double target) const
   {
     const double R0 = parameters.geometry.outer_radius;
-    const double R  = NipEstimates::effective_radius(parameters);
+    const double R  = NipEstimates::effective_radius(contact.scene());
     double       b;
     if (by_load)
       {
         // Hertz (E* = 4 G) and the thin layer give too wide a nip for a
         // bonded layer of finite thickness: start below both.
-        const double b_hertz =
-          std::sqrt(4 * target * R /
-                    (numbers::PI * NipEstimates::contact_modulus(parameters)));
+        const double b_hertz = std::sqrt(
+          4 * target * R /
+          (numbers::PI * NipEstimates::contact_modulus(contact.scene())));
         const double b_thin =
-          std::pow(7.5 * R * NipEstimates::thin_layer_compliance(parameters) *
+          std::pow(7.5 * R *
+                     NipEstimates::thin_layer_compliance(contact.scene()) *
                      target,
                    0.2);
         b = IterationControls::first_guess_fraction * std::min(b_hertz, b_thin);

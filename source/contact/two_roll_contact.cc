@@ -2,12 +2,13 @@
 
 #include <rollnip/contact/two_roll_contact.h>
 #include <rollnip/geometry/angles.h>
-#include <rollnip/material/material_table.h>
 #include <rollnip/solvers/iteration_controls.h>
 
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <utility>
+#include <variant>
 
 namespace rollnip
 {
@@ -66,25 +67,26 @@ namespace rollnip
     /// The reference angle of the mating roll whose contact edge lies at
     /// the same distance from the line of centres as the roll's at theta0.
     double
-    mate_nip_angle(const Parameters::AllParameters &p, const double theta0)
+    mate_nip_angle(const SceneDescription &scene, const double theta0)
     {
-      const double R0 = p.geometry.outer_radius;
-      const double Rm = p.mating_roll.geometry.outer_radius;
+      const double R0 = scene.roll.outer_radius();
+      const double Rm = scene.counter_radius();
       return std::asin(
         std::min(IterationControls::max_mate_sine, R0 * std::sin(theta0) / Rm));
     }
   } // namespace
 
   TwoRollContact::TwoRollContact(ContactBody                     &roll,
-                                 const Parameters::AllParameters &parameters)
-      : parameters(parameters)
-      , mate_parameters(parameters.mating_roll_parameters())
+                                 const Parameters::AllParameters &parameters,
+                                 const SceneDescription          &description,
+                                 Parameters::AllParameters mate_parameters)
+      : mate_parameters(std::move(mate_parameters))
       , roll(roll)
-      , mate(mate_parameters, roll.communicator())
-      , mate_surface(std::make_shared<DeformedRoll>(
-          parameters.geometry.outer_radius,
-          parameters.mating_roll.geometry.outer_radius))
-      , contact(roll, parameters, mate_surface)
+      , mate(this->mate_parameters, roll.communicator())
+      , mate_surface(
+          std::make_shared<DeformedRoll>(description.roll.outer_radius(),
+                                         description.counter_radius()))
+      , contact(roll, parameters, description, mate_surface)
       , pcout(std::cout,
               Utilities::MPI::this_mpi_process(roll.communicator()) == 0)
   {
@@ -109,7 +111,7 @@ namespace rollnip
       surface_values(mate_nodes, mate.current_solution(), mate.locally_owned());
     // As for the first roll (InverseContact): linear theory moves the
     // surface along its reference normal only.
-    if (parameters.material.theory == Parameters::Theory::linear)
+    if (scene().analysis.theory == Parameters::Theory::linear)
       for (unsigned int i = 0; i < u.size(); ++i)
         {
           const Tensor<1, dim> n = mate_nodes[i].X / mate_nodes[i].X.norm();
@@ -125,11 +127,10 @@ namespace rollnip
     // (increasing near the nip, where the pressure is): of the deformed
     // surfaces, where the two coincide; in linear theory, which loads the
     // reference surfaces, of those, so that both carry the same P.
-    const bool linear =
-      parameters.material.theory == Parameters::Theory::linear;
-    const auto         &nodes = contact.surface_nodes();
-    const auto          x     = linear ? deformed(nodes, {})
-                                       : deformed(nodes, contact.surface_displacements());
+    const bool  linear = scene().analysis.theory == Parameters::Theory::linear;
+    const auto &nodes  = contact.surface_nodes();
+    const auto  x      = linear ? deformed(nodes, {})
+                                : deformed(nodes, contact.surface_displacements());
     std::vector<double> x2, theta;
     for (unsigned int i = 0; i < x.size(); ++i)
       if (x2.empty() || x[i][1] > x2.back())
@@ -147,7 +148,7 @@ namespace rollnip
       }
     const std::function<double(double)> f = contact.pressure();
     const double                        edge =
-      linear ? parameters.geometry.outer_radius * std::sin(result.theta0)
+      linear ? scene().roll.outer_radius() * std::sin(result.theta0)
                                     : result.half_chord;
     // The mating point at the edge, on the part of its surface where x2
     // still grows with the angle.
@@ -184,13 +185,13 @@ namespace rollnip
     const auto y            = mate_shape();
     result.two_rolls        = true;
     result.roll_indentation = result.indentation;
-    result.mate_indentation = mate_parameters.geometry.outer_radius - y[0][0];
+    result.mate_indentation = mate_description().outer_radius() - y[0][0];
     result.indentation      = result.roll_indentation + result.mate_indentation;
     result.mate_nip_load    = -2. * mate.load_resultant(1.)[0];
     // The first roll's deformed surface seen from the mating roll: its
     // nodes outside the zone must not lie inside it.
-    DeformedRoll roll_surface(mate_parameters.geometry.outer_radius,
-                              parameters.geometry.outer_radius);
+    DeformedRoll roll_surface(mate_description().outer_radius(),
+                              scene().roll.outer_radius());
     roll_surface.set_shape(
       deformed(contact.surface_nodes(), contact.surface_displacements()));
     double min_gap = 0;
@@ -255,8 +256,8 @@ namespace rollnip
     // back to this one.
     const InverseContact::Converged last = contact.last_converged();
     // Two half-spaces: the exact relaxation is G_mate / (G + G_mate).
-    const double G     = surface_shear_modulus(parameters.material);
-    const double G_m   = surface_shear_modulus(mate_parameters.material);
+    const double G     = scene().roll.surface_layer().shear_modulus();
+    const double G_m   = mate_description().surface_layer().shear_modulus();
     double       omega = G_m / (G + G_m);
     const double tolerance =
       IterationControls::two_roll_tolerance_factor * contact.tolerance();
@@ -266,7 +267,9 @@ namespace rollnip
     ContactResult               result;
     pcout << "Two-roll contact, theta0 = " << theta0 * degrees_per_radian
           << " deg" << std::endl;
-    for (unsigned int k = 1; k <= parameters.mating_roll.max_iterations; ++k)
+    const unsigned int max_passes =
+      std::get<CounterKind::CoveredRoll>(scene().counter).max_iterations;
+    for (unsigned int k = 1; k <= max_passes; ++k)
       {
         mate_surface->set_shape(shape);
         result                  = contact.solve(theta0);
@@ -333,7 +336,7 @@ namespace rollnip
   {
     // The estimate, scaled as it was off at the last converged nip; the
     // passes refit the mesh once they show the edge.
-    const double estimate = mate_nip_angle(parameters, theta0);
+    const double estimate = mate_nip_angle(scene(), theta0);
     mate_refits           = 0;
     if (mate.has_nip_fitted_mesh())
       fit_mate_mesh(mate_angle_factor * estimate);
@@ -362,8 +365,8 @@ namespace rollnip
     mate.set_output_directory(directory + "/mating_roll");
     // In the first roll's frame: its centre at the distance D of the
     // centres, half a turn about D/2 on the line of centres.
-    const double D = parameters.geometry.outer_radius +
-                     mate_parameters.geometry.outer_radius - result.indentation;
+    const double D = scene().roll.outer_radius() +
+                     mate_description().outer_radius() - result.indentation;
     mate.set_vtu_placement(Point<dim>(D / 2, 0.));
     if (with_vtu)
       mate.write_vtu(step, 1.);

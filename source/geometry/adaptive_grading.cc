@@ -4,7 +4,6 @@
 
 #include <deal.II/numerics/error_estimator.h>
 
-#include <rollnip/contact/nip_study.h>
 #include <rollnip/geometry/adaptive_grading.h>
 #include <rollnip/geometry/roll_mesh.h>
 #include <rollnip/problem.h>
@@ -12,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <memory>
 #include <numeric>
 
 namespace rollnip
@@ -87,62 +87,5 @@ namespace rollnip
     for (unsigned int k = 0; k < n; ++k)
       result[k] = vertices[k + 1] - vertices[k];
     return result;
-  }
-
-  Parameters::AllParameters
-  adapt_grading(const Parameters::AllParameters &parameters)
-  {
-    Parameters::AllParameters p = parameters;
-    if (parameters.mesh.adaptive_passes == 0 ||
-        parameters.mesh.source != Parameters::MeshSource::builtin)
-      return p;
-    ConditionalOStream pcout(std::cout,
-                             Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) ==
-                               0);
-    p.mesh.circumferential_steps    = coarse_circumferential_steps(p);
-    Parameters::AllParameters quiet = p;
-    quiet.output.write_vtu          = false;
-    quiet.output.write_csv          = false;
-    quiet.output.print_timing       = false;
-    quiet.contact.compare_linear    = false;
-    for (unsigned int pass = 1; pass <= parameters.mesh.adaptive_passes; ++pass)
-      {
-        quiet.mesh.circumferential_steps = p.mesh.circumferential_steps;
-        RollProblem problem(quiet, MPI_COMM_WORLD);
-        problem.setup();
-        problem.set_step_log(false);
-        if (quiet.contact.mode != Parameters::ContactMode::none)
-          {
-            InverseContact      contact(problem, quiet);
-            const ContactResult r =
-              solve_controlled_nip(contact, quiet, quiet.contact.values[0]);
-            AssertThrow(r.converged,
-                        ExcMessage("Mesh/Adaptive grading passes: the solve of "
-                                   "pass " +
-                                   std::to_string(pass) +
-                                   " failed: " + r.message));
-          }
-        else
-          {
-            const RunStatus status = problem.run();
-            AssertThrow(status.converged,
-                        ExcMessage("Mesh/Adaptive grading passes: the solve of "
-                                   "pass " +
-                                   std::to_string(pass) +
-                                   " failed: " + status.message));
-          }
-        p.mesh.circumferential_steps =
-          adapted_circumferential_steps(problem,
-                                        p.mesh.circumferential_steps,
-                                        p.geometry.sector_angle);
-        const auto &w = p.mesh.circumferential_steps;
-        pcout << "Adaptive grading, pass " << pass << ": coarse cells from "
-              << std::setprecision(3) << w.front() * 180 / numbers::PI
-              << " deg at the line of centres to "
-              << *std::max_element(w.begin(), w.end()) * 180 / numbers::PI
-              << " deg (widest)" << std::endl;
-        problem.silence_timer();
-      }
-    return p;
   }
 } // namespace rollnip

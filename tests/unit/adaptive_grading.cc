@@ -10,6 +10,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <rollnip/app/adaptive_grading.h>
 #include <rollnip/geometry/adaptive_grading.h>
 
 #include <numeric>
@@ -55,7 +56,7 @@ main(int argc, char **argv)
   const double e_uniform = std::abs(u0(uniform) / reference - 1);
 
   uniform.mesh.adaptive_passes = 1;
-  const auto   adapted         = adapt_grading(uniform);
+  const auto   adapted         = adapt_grading(uniform, MPI_COMM_WORLD);
   const auto  &w               = adapted.mesh.circumferential_steps;
   const double e_adapted       = std::abs(u0(adapted) / reference - 1);
 

@@ -9,7 +9,9 @@
 //    node. The same sweep on the fixed mesh (Nip fitting = off) is run over 4
 //    to 10 deg to measure those steps with the same yardstick.
 
-#include <rollnip/contact/nip_study.h>
+#include <rollnip/contact/inverse_contact.h>
+#include <rollnip/contact/nip_control.h>
+#include <rollnip/problem.h>
 
 #include "test_tools.h"
 

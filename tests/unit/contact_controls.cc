@@ -6,7 +6,9 @@
 // Rbar = 76.2 mm cylinder for the same nip (its relative curvature is
 // smaller: 1/R0 instead of 1/R0 + 1/Rbar).
 
-#include <rollnip/contact/nip_study.h>
+#include <rollnip/contact/inverse_contact.h>
+#include <rollnip/contact/nip_control.h>
+#include <rollnip/problem.h>
 
 #include "test_tools.h"
 

@@ -14,7 +14,9 @@
 // the test stops at 2 deg. Asserted: the peak error falls monotonically
 // from 8 to 2 deg; P within 1 % (and better than at 8 deg) for b/h < 0.08.
 
-#include <rollnip/contact/nip_study.h>
+#include <rollnip/contact/inverse_contact.h>
+#include <rollnip/contact/nip_control.h>
+#include <rollnip/problem.h>
 
 #include "hertz_comparison.h"
 

@@ -13,7 +13,9 @@
 // A target beyond the mesh's largest nip is refused with the largest load
 // reached named in the message.
 
-#include <rollnip/contact/nip_study.h>
+#include <rollnip/contact/inverse_contact.h>
+#include <rollnip/contact/nip_control.h>
+#include <rollnip/problem.h>
 
 #include "test_tools.h"
 

@@ -27,9 +27,12 @@
 //     0.46 % at 2 deg); the finite-strain solver on the same scene lies
 //     within 1 % of Hertz at 4 and 2 deg, closer at 2.
 
+#include <rollnip/contact/inverse_contact.h>
+#include <rollnip/contact/nip_control.h>
 #include <rollnip/contact/nip_estimates.h>
-#include <rollnip/contact/nip_study.h>
 #include <rollnip/contact/two_roll_contact.h>
+#include <rollnip/problem.h>
+#include <rollnip/scene/scene_builder.h>
 
 #include "hertz_comparison.h"
 
@@ -42,17 +45,15 @@ namespace
   const std::string default_mesh =
     "subsection Mesh\n set Global refinements = 1\nend\n";
 
-  /// The nip at @p theta0_deg of the scene @p text with the contact
-  /// solver Solver (TwoRollContact or InverseContact).
-  template <typename Solver>
+  /// The nip at @p theta0_deg of the scene @p text with the scene's
+  /// contact solver (TwoRollContact against a covered roll, else
+  /// InverseContact).
   ContactResult
   solve_nip(const std::string &text, const double theta0_deg)
   {
-    const auto  p = testing::parameters_from_string(text);
-    RollProblem roll(p, MPI_COMM_WORLD);
-    roll.setup();
-    Solver contact(roll, p);
-    return contact.solve(theta0_deg * deg);
+    const auto p = testing::parameters_from_string(text);
+    Scene      scene(p, MPI_COMM_WORLD);
+    return scene.nip_solver().solve(theta0_deg * deg);
   }
 
   double
@@ -97,10 +98,8 @@ namespace
       default_mesh + "end\n";
     for (const double theta0 : {4., 8.})
       {
-        const ContactResult flat =
-          solve_nip<InverseContact>(default_mesh + contact, theta0);
-        const ContactResult r =
-          solve_nip<TwoRollContact>(default_mesh + two, theta0);
+        const ContactResult flat = solve_nip(default_mesh + contact, theta0);
+        const ContactResult r    = solve_nip(default_mesh + two, theta0);
         std::cout << "  theta0 = " << theta0 << " deg: P " << r.nip_load
                   << " N/mm (plane " << flat.nip_load << "), approach "
                   << r.indentation << " mm (2 u0 of the plane "
@@ -132,7 +131,7 @@ namespace
       " subsection Material\n  set C1 = 1.5, 0.5\n  set C2 = 0, 0\n"
       "  set Layer thicknesses = 4.2, 10\n end\n" +
       default_mesh + "end\n";
-    const ContactResult reference = solve_nip<TwoRollContact>(
+    const ContactResult reference = solve_nip(
       default_mesh +
         "subsection Contact\n set Mode = nip angle\n set Values = 7\nend\n" +
         mate,
@@ -145,11 +144,10 @@ namespace
         const auto p = testing::parameters_from_string(
           default_mesh + "subsection Contact\n set Mode = " + mode +
           "\n set Values = " + std::to_string(target) + "\nend\n" + mate);
-        RollProblem roll(p, MPI_COMM_WORLD);
-        roll.setup();
-        TwoRollContact      contact(roll, p);
-        const ContactResult r      = solve_controlled_nip(contact, p, target);
-        const double        dtheta = r.theta0 / reference.theta0 - 1;
+        Scene               scene(p, MPI_COMM_WORLD);
+        const ContactResult r =
+          solve_controlled_nip(scene.nip_solver(), p, target);
+        const double dtheta = r.theta0 / reference.theta0 - 1;
         std::cout << "  " << mode << " " << target << ": theta0 "
                   << r.theta0 / deg << " deg, P " << r.nip_load
                   << " N/mm, approach " << r.indentation << " mm" << std::endl;
@@ -181,10 +179,9 @@ namespace
       default_mesh + "end\n";
     for (const double theta0 : {4., 8.})
       {
-        const ContactResult rigid = solve_nip<InverseContact>(
-          scene + " set Indenter radius = 76.2\nend\n", theta0);
-        const ContactResult r =
-          solve_nip<TwoRollContact>(scene + "end\n" + mate, theta0);
+        const ContactResult rigid =
+          solve_nip(scene + " set Indenter radius = 76.2\nend\n", theta0);
+        const ContactResult r = solve_nip(scene + "end\n" + mate, theta0);
         std::cout << "  theta0 = " << theta0 << " deg: P " << r.nip_load
                   << " N/mm (rigid " << rigid.nip_load << "), approach "
                   << r.indentation << " mm (rigid " << rigid.indentation
@@ -230,13 +227,11 @@ namespace
   thick_cover_nips(const std::string         &theory,
                    const std::vector<double> &theta0s)
   {
-    const auto  p = thick_covers(theory);
-    RollProblem roll(p, MPI_COMM_WORLD);
-    roll.setup();
-    TwoRollContact             contact(roll, p);
+    const auto                 p = thick_covers(theory);
+    Scene                      scene(p, MPI_COMM_WORLD);
     std::vector<ContactResult> nips;
     for (const double theta0 : theta0s)
-      nips.push_back(contact.solve(theta0 * deg));
+      nips.push_back(scene.nip_solver().solve(theta0 * deg));
     return {p, nips};
   }
 
@@ -245,8 +240,9 @@ namespace
   {
     const std::vector<double> theta0s = {8., 6., 4., 2.};
     const auto [p, nips]              = thick_cover_nips("linear", theta0s);
-    testing::HertzComparison hertz(NipEstimates::contact_modulus(p),
-                                   NipEstimates::effective_radius(p),
+    const SceneDescription   scene    = describe_scene(p);
+    testing::HertzComparison hertz(NipEstimates::contact_modulus(scene),
+                                   NipEstimates::effective_radius(scene),
                                    55.7);
     for (unsigned int i = 0; i < nips.size(); ++i)
       {
@@ -267,7 +263,8 @@ namespace
     for (unsigned int i = 0; i < nips.size(); ++i)
       {
         const ContactResult &r = nips[i];
-        const double P_hertz   = NipEstimates::hertz_load(p, r.half_chord);
+        const double         P_hertz =
+          NipEstimates::hertz_load(describe_scene(p), r.half_chord);
         error.push_back(relative(r.nip_load, P_hertz));
         checker.check(r.converged && error.back() < 1e-2,
                       "nonlinear, theta0 = " + testing::num(theta0s[i]) +

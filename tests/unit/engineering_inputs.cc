@@ -13,8 +13,10 @@
 //    C1 + C2 is its own E/6 from Gent's relation (1e-15), and the nip
 //    report's modulus is the top layer's.
 
-#include <rollnip/contact/nip_study.h>
+#include <rollnip/contact/inverse_contact.h>
+#include <rollnip/contact/nip_control.h>
 #include <rollnip/material/hardness.h>
+#include <rollnip/problem.h>
 
 #include "test_tools.h"
 

@@ -20,7 +20,9 @@
 //  - A nip too large for the cover (theta0 = 20 deg) is refused, not
 //    returned as converged.
 
-#include <rollnip/contact/nip_study.h>
+#include <rollnip/contact/inverse_contact.h>
+#include <rollnip/contact/nip_control.h>
+#include <rollnip/problem.h>
 
 #include "test_tools.h"
 

@@ -8,8 +8,8 @@
 //    law's sampling;
 // 3. the law is read back from its cache, and another cross-section
 //    gets another file.
+#include <rollnip/app/cross_section_law.h>
 #include <rollnip/face/beam.h>
-#include <rollnip/face/cross_section_law.h>
 #include <rollnip/face/face_solver.h>
 #include <rollnip/face/foundation_law.h>
 
@@ -94,10 +94,12 @@ main(int argc, char **argv)
   const Parameters::AllParameters p = testing::parameters_from_string(run30);
   const Parameters::Face          coarse_face = face_parameters(8),
                          fine_face            = face_parameters(15);
-  const LawSamples coarse =
-    cross_section_law(p, coarse_face, law_approaches(p, coarse_face, 20));
-  const LawSamples fine =
-    cross_section_law(p, fine_face, law_approaches(p, fine_face, 20));
+  const LawSamples coarse                     = cross_section_law(
+    p, coarse_face, law_approaches(p, coarse_face, 20), MPI_COMM_WORLD);
+  const LawSamples fine = cross_section_law(p,
+                                            fine_face,
+                                            law_approaches(p, fine_face, 20),
+                                            MPI_COMM_WORLD);
   std::cout << "Sweeps: 8 approaches in " << num(coarse.sweep_seconds)
             << " s, 15 in " << num(fine.sweep_seconds) << " s, " << fine.n_cells
             << " cells" << std::endl;
@@ -145,9 +147,11 @@ main(int argc, char **argv)
                 "the uncrowned roll bends away: the centre is light");
 
   std::cout << "3. The cache" << std::endl;
-  const LawSamples again =
-    cross_section_law(p, fine_face, law_approaches(p, fine_face, 20));
-  double read_back = 0;
+  const LawSamples again     = cross_section_law(p,
+                                             fine_face,
+                                             law_approaches(p, fine_face, 20),
+                                             MPI_COMM_WORLD);
+  double           read_back = 0;
   for (unsigned int i = 0; i < fine.line_load.size(); ++i)
     read_back =
       std::max(read_back, std::abs(again.line_load[i] / fine.line_load[i] - 1));

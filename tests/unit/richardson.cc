@@ -3,7 +3,7 @@
 // back to round-off), and an observed order above the element's degree
 // + 1 is flagged and not used: the value is extrapolated with the cap.
 
-#include <rollnip/study/refinement_study.h>
+#include <rollnip/app/refinement_study.h>
 
 #include "test_tools.h"
 

@@ -12,7 +12,9 @@
 // the bond stresses; the errors fall monotonically from 30 to 90 deg; the
 // 30 deg sector is off by more than 1 % in P (so the check can fail).
 
-#include <rollnip/contact/nip_study.h>
+#include <rollnip/contact/inverse_contact.h>
+#include <rollnip/contact/nip_control.h>
+#include <rollnip/problem.h>
 
 #include "test_tools.h"
 

@@ -4,6 +4,7 @@
 #include <deal.II/base/point.h>
 
 #include <rollnip/global.h>
+#include <rollnip/scene/scene_description.h>
 
 #include <memory>
 #include <utility>
@@ -173,6 +174,11 @@ namespace rollnip
   /// The circle of radius @p radius, or the plane for radius = infinity.
   std::unique_ptr<CounterSurface>
   make_counter_surface(const double outer_radius, const double radius);
+
+  /// The rigid counter surface (circle or plane) of @p scene; throws for
+  /// a covered mating roll, whose surface is its solver's (DeformedRoll).
+  std::unique_ptr<CounterSurface>
+  make_counter_surface(const SceneDescription &scene);
 } // namespace rollnip
 
 #endif

@@ -30,14 +30,18 @@ namespace rollnip
   class InverseContact : public NipSolver
   {
   public:
-    /// Against the rigid circle or plane of Contact/Indenter radius.
+    /// Against the rigid circle or plane of Contact/Indenter radius; a
+    /// scene with a covered mating roll is refused (its solver is
+    /// TwoRollContact, built by the scene builder).
     InverseContact(ContactBody                     &body,
                    const Parameters::AllParameters &parameters);
 
-    /// Against @p counter_surface, which its owner may reshape between
-    /// solves (the deformed surface of a mating roll).
+    /// Against @p counter_surface of the scene @p description, which its
+    /// owner may reshape between solves (the deformed surface of a mating
+    /// roll).
     InverseContact(ContactBody                          &body,
                    const Parameters::AllParameters      &parameters,
+                   const SceneDescription               &description,
                    std::shared_ptr<const CounterSurface> counter_surface);
 
     ContactResult
@@ -52,6 +56,12 @@ namespace rollnip
     communicator() const override
     {
       return body.communicator();
+    }
+
+    const SceneDescription &
+    scene() const override
+    {
+      return description;
     }
 
     /// The state, pressure and theta0 of a converged nip.
@@ -186,6 +196,7 @@ namespace rollnip
 
     ContactBody                                &body;
     const Parameters::AllParameters            &parameters;
+    const SceneDescription                      description;
     const std::shared_ptr<const CounterSurface> counter_surface;
     std::vector<SurfaceNode>                    nodes;
     ConditionalOStream                          pcout;

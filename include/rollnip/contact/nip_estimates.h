@@ -1,7 +1,7 @@
 #ifndef rollnip_contact_nip_estimates_h
 #define rollnip_contact_nip_estimates_h
 
-#include <rollnip/parameters.h>
+#include <rollnip/scene/scene_description.h>
 
 namespace rollnip
 {
@@ -9,38 +9,37 @@ namespace rollnip
    * The closed-form nip estimates of a contact scene (doc/intro.md section
    * 7, doc/two_rolls.md): first guesses of the contact iteration and the
    * reference columns of the nip characteristic. The mating body is the
-   * rigid circle or plane of Contact/Indenter radius, or the covered
+   * scene's counter surface: a rigid circle or plane, or the covered
    * mating roll, whose cover adds its compliance to the roll's.
    */
   namespace NipEstimates
   {
     /// R with 1/R = 1/R0 + 1/R_mate [mm] (R0 for a flat mate).
     double
-    effective_radius(const Parameters::AllParameters &p);
+    effective_radius(const SceneDescription &scene);
 
     /// E* of plane-strain Hertz [MPa], 1/E* = sum over the deformable
     /// covers of 1/(4 G) (incompressible), G of the outer layer.
     double
-    contact_modulus(const Parameters::AllParameters &p);
+    contact_modulus(const SceneDescription &scene);
 
     /// 3 int_0^h (h - s)^2 / G(s) ds [mm^3/MPa] of one cover, s from the
     /// core out through its layers: h^3 / G for one layer.
     double
-    layered_compliance(const Parameters::Geometry &geometry,
-                       const Parameters::Material &material);
+    layered_compliance(const RollDescription &roll);
 
     /// Sum over the deformable covers of layered_compliance(): the thin
     /// bonded incompressible layer has P = 2 b^5 / (15 R sum h^3/G).
     double
-    thin_layer_compliance(const Parameters::AllParameters &p);
+    thin_layer_compliance(const SceneDescription &scene);
 
     /// P of Hertz for the contact half-width @p b [N/mm].
     double
-    hertz_load(const Parameters::AllParameters &p, const double b);
+    hertz_load(const SceneDescription &scene, const double b);
 
     /// P of the thin layer(s) for the contact half-width @p b [N/mm].
     double
-    thin_layer_load(const Parameters::AllParameters &p, const double b);
+    thin_layer_load(const SceneDescription &scene, const double b);
   } // namespace NipEstimates
 } // namespace rollnip
 

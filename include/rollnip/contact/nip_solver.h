@@ -4,6 +4,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <rollnip/contact/contact_result.h>
+#include <rollnip/scene/scene_description.h>
 
 #include <string>
 
@@ -32,6 +33,11 @@ namespace rollnip
     /// The processes that solve the nip (the roll's).
     virtual MPI_Comm
     communicator() const = 0;
+
+    /// The scene whose nip this solver solves (its estimates start the
+    /// control's iteration).
+    virtual const SceneDescription &
+    scene() const = 0;
 
     /// Writes what this solver adds to the roll's results of nip @p step in
     /// @p directory (collective); nothing for a rigid counter surface.

@@ -34,8 +34,13 @@ namespace rollnip
   class TwoRollContact : public NipSolver
   {
   public:
+    /// The nip of @p roll, of the scene @p description, and the mating
+    /// roll of @p mate_parameters (made by the scene builder, kept here
+    /// for the mating roll's problem).
     TwoRollContact(ContactBody                     &roll,
-                   const Parameters::AllParameters &parameters);
+                   const Parameters::AllParameters &parameters,
+                   const SceneDescription          &description,
+                   Parameters::AllParameters        mate_parameters);
 
     ContactResult
     solve(const double theta0) override;
@@ -52,6 +57,12 @@ namespace rollnip
       return contact.communicator();
     }
 
+    const SceneDescription &
+    scene() const override
+    {
+      return contact.scene();
+    }
+
     /// The mating roll's files in @p directory/mating_roll.
     void
     write_results(const ContactResult &result,
@@ -66,6 +77,13 @@ namespace rollnip
     }
 
   private:
+    /// The mating roll's description.
+    const RollDescription &
+    mate_description() const
+    {
+      return *contact.scene().covered_mate();
+    }
+
     /// Deformed surface nodes of a roll in its own frame (reference
     /// position plus the displacement @p u the gap sees; none if empty).
     static std::vector<Point<dim>>
@@ -114,7 +132,6 @@ namespace rollnip
     void
     restore(const InverseContact::Converged &roll_nip);
 
-    const Parameters::AllParameters    &parameters;
     const Parameters::AllParameters     mate_parameters;
     ContactBody                        &roll;
     RollProblem                         mate;

@@ -25,16 +25,6 @@ namespace rollnip
   adapted_circumferential_steps(const RollProblem         &problem,
                                 const std::vector<double> &steps,
                                 const double               sector_angle);
-
-  /**
-   * Runs the scene of @p parameters Mesh/Adaptive grading passes times
-   * (pressure or the first contact value), each time re-cutting the coarse
-   * circumferential cells by adapted_circumferential_steps(), and returns
-   * the parameters with Mesh::circumferential_steps set to the result.
-   * Without passes, or on a gmsh mesh, returns @p parameters unchanged.
-   */
-  Parameters::AllParameters
-  adapt_grading(const Parameters::AllParameters &parameters);
 } // namespace rollnip
 
 #endif

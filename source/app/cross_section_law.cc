@@ -1,9 +1,10 @@
 #include <deal.II/base/mpi.h>
 
+#include <rollnip/app/cross_section_law.h>
+#include <rollnip/app/nip_study.h>
 #include <rollnip/contact/nip_estimates.h>
-#include <rollnip/contact/nip_study.h>
-#include <rollnip/face/cross_section_law.h>
 #include <rollnip/output/atomic_file.h>
+#include <rollnip/scene/scene_description.h>
 
 #include <algorithm>
 #include <chrono>
@@ -157,8 +158,9 @@ namespace rollnip
           // The thin bonded layer, P = 2 b^5 / (15 R C) with u0 = b^2 /
           // (2 R), at three times the line load, but at most half the
           // cover (beyond, the layer is not thin and the nip not small).
-          const double R = NipEstimates::effective_radius(parameters);
-          const double C = NipEstimates::thin_layer_compliance(parameters);
+          const SceneDescription scene = describe_scene(parameters);
+          const double           R     = NipEstimates::effective_radius(scene);
+          const double           C = NipEstimates::thin_layer_compliance(scene);
           const double b = std::pow(15 * R * C * 3 * line_load / 2, 0.2);
           double       cover =
             parameters.geometry.outer_radius - parameters.geometry.inner_radius;
@@ -206,7 +208,8 @@ namespace rollnip
     LawSamples
     cross_section_law(const Parameters::AllParameters &parameters,
                       const Parameters::Face          &face,
-                      const std::vector<double>       &approaches)
+                      const std::vector<double>       &approaches,
+                      MPI_Comm                         communicator)
     {
       const std::string  key = cross_section_key(parameters, approaches);
       std::ostringstream name;
@@ -230,6 +233,7 @@ namespace rollnip
       std::vector<NipRow> rows;
       const int           code =
         run_nip_study(sweep_parameters(parameters, approaches, sweep_dir),
+                      communicator,
                       &rows);
       AssertThrow(code == 0 && rows.size() == approaches.size(),
                   ExcMessage("Face: the cross-section's sweep stopped after " +
@@ -248,14 +252,14 @@ namespace rollnip
           law.peak_pressure.push_back(row.nonlinear.peak_pressure);
           law.n_cells = row.n_cells;
         }
-      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      if (Utilities::MPI::this_mpi_process(communicator) == 0)
         {
           make_directories(dir);
           write_cache(law, key);
           // The sweep's nips are the law's raw material, not results.
           std::filesystem::remove_all(sweep_dir);
         }
-      MPI_Barrier(MPI_COMM_WORLD);
+      MPI_Barrier(communicator);
       return law;
     }
   } // namespace Face

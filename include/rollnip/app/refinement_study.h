@@ -1,5 +1,7 @@
-#ifndef rollnip_study_refinement_study_h
-#define rollnip_study_refinement_study_h
+#ifndef rollnip_app_refinement_study_h
+#define rollnip_app_refinement_study_h
+
+#include <deal.II/base/mpi.h>
 
 #include <rollnip/parameters.h>
 
@@ -39,7 +41,8 @@ namespace rollnip
    * code; a failed run ends the study with the rows before it written.
    */
   int
-  run_refinement_study(const Parameters::AllParameters &parameters);
+  run_refinement_study(const Parameters::AllParameters &parameters,
+                       MPI_Comm                         communicator);
 } // namespace rollnip
 
 #endif

@@ -1,5 +1,7 @@
-#ifndef rollnip_face_cross_section_law_h
-#define rollnip_face_cross_section_law_h
+#ifndef rollnip_app_cross_section_law_h
+#define rollnip_app_cross_section_law_h
+
+#include <deal.II/base/mpi.h>
 
 #include <rollnip/face/face_parameters.h>
 #include <rollnip/parameters.h>
@@ -45,11 +47,13 @@ namespace rollnip
                       const std::vector<double>       &approaches);
 
     /// The law at @p approaches: read from the cache file if it holds
-    /// this cross-section's, else swept (collective) and written there.
+    /// this cross-section's, else swept on the processes of
+    /// @p communicator (collective) and written there.
     LawSamples
     cross_section_law(const Parameters::AllParameters &parameters,
                       const Parameters::Face          &face,
-                      const std::vector<double>       &approaches);
+                      const std::vector<double>       &approaches,
+                      MPI_Comm                         communicator);
   } // namespace Face
 } // namespace rollnip
 

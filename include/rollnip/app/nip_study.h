@@ -1,5 +1,5 @@
-#ifndef rollnip_contact_nip_study_h
-#define rollnip_contact_nip_study_h
+#ifndef rollnip_app_nip_study_h
+#define rollnip_app_nip_study_h
 
 #include <rollnip/contact/inverse_contact.h>
 #include <rollnip/contact/nip_control.h>
@@ -32,23 +32,18 @@ namespace rollnip
   NipNumbers
   nip_numbers(const NipRow &row);
 
-  /// The contact solver of the scene: InverseContact against the rigid
-  /// indenter, or TwoRollContact against a covered mating roll.
-  std::unique_ptr<NipSolver>
-  make_nip_solver(RollProblem                     &roll,
-                  const Parameters::AllParameters &parameters);
-
   /**
    * Runs the contact scenes of the Contact subsection (doc/intro.md,
    * section 7): for each of Contact/Values, the nip controlled by theta0,
    * P or u0; writes each nip's files (in the output directory for one
    * value, in nip-NN/ below it for a sweep), the nip characteristic with
    * linear theory, Hertz and the thin-layer asymptote beside it, and
-   * prints the table. Returns the exit code; the rows, if @p rows_out is
-   * given, go there too.
+   * prints the table, on the processes of @p communicator. Returns the
+   * exit code; the rows, if @p rows_out is given, go there too.
    */
   int
   run_nip_study(const Parameters::AllParameters &parameters,
+                MPI_Comm                         communicator,
                 std::vector<NipRow>             *rows_out = nullptr);
 
 } // namespace rollnip

@@ -1,13 +1,12 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
+#include <rollnip/app/nip_report.h>
+#include <rollnip/app/nip_study.h>
 #include <rollnip/boundary_ids.h>
 #include <rollnip/contact/counter_surface.h>
 #include <rollnip/contact/nip_control.h>
 #include <rollnip/contact/nip_estimates.h>
-#include <rollnip/contact/nip_report.h>
-#include <rollnip/contact/nip_study.h>
-#include <rollnip/contact/two_roll_contact.h>
 #include <rollnip/geometry/angles.h>
 #include <rollnip/interrupt.h>
 #include <rollnip/material/material_table.h>
@@ -16,6 +15,7 @@
 #include <rollnip/output/silence_cerr.h>
 #include <rollnip/output/sweep_pvd.h>
 #include <rollnip/run_errors.h>
+#include <rollnip/scene/scene_builder.h>
 
 #include <algorithm>
 #include <cmath>
@@ -31,16 +31,14 @@ namespace rollnip
   {
     constexpr double deg = 180. / numbers::PI;
 
-    /// Points of the indenter outline near the nip (deformed configuration),
-    /// out to three half-chords.
+    /// Points of the rigid indenter's outline near the nip (deformed
+    /// configuration), out to three half-chords.
     std::vector<Point<dim>>
-    indenter_outline(const Parameters::AllParameters &p, const ContactResult &r)
+    indenter_outline(const Scene &scene, const ContactResult &r)
     {
-      const double R0 = p.geometry.outer_radius;
-      return make_counter_surface(R0, p.contact.indenter_radius)
-        ->outline(r.indentation,
-                  std::min(3 * std::max(r.half_chord, 1e-3), R0),
-                  200);
+      const double R0 = scene.description.roll.outer_radius();
+      return scene.rigid_counter_surface()->outline(
+        r.indentation, std::min(3 * std::max(r.half_chord, 1e-3), R0), 200);
     }
 
     /// The nip's pieces that are not cells of the mesh (collective, rank 0
@@ -48,17 +46,16 @@ namespace rollnip
     /// (for the plot of the deformed surface) and indenter.vtp, and the
     /// contact pressure along the deformed surface as contact_pressure.vtp.
     void
-    write_nip_pieces(const RollProblem               &problem,
-                     const Parameters::AllParameters &p,
-                     const ContactResult             &r,
-                     const std::string               &dir)
+    write_nip_pieces(const Scene         &scene,
+                     const ContactResult &r,
+                     const std::string   &dir)
     {
-      const SurfaceData data = problem.surface_data(1.);
-      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+      const SurfaceData data = scene.roll().surface_data(1.);
+      if (Utilities::MPI::this_mpi_process(scene.roll().communicator()) != 0)
         return;
-      if (!p.mating_roll.covered)
+      if (scene.rigid_counter_surface())
         {
-          const auto outline = indenter_outline(p, r);
+          const auto outline = indenter_outline(scene, r);
           write_atomically(dir + "/indenter.csv", [&](std::ostream &out) {
             out << "x_mm,y_mm\n" << std::setprecision(10);
             for (const auto &x : outline)
@@ -87,21 +84,21 @@ namespace rollnip
     constexpr double traction_mismatch_warning = 0.05;
 
     /// Fills the postprocessed columns of @p row from the converged nip
-    /// of @p problem.
+    /// of @p scene.
     void
-    fill_nip_values(const RollProblem               &problem,
-                    const Parameters::AllParameters &parameters,
-                    NipRow                          &row)
+    fill_nip_values(const Scene &scene, NipRow &row)
     {
-      const SurfaceData data    = problem.surface_data(1.);
+      const RollProblem      &problem     = scene.roll();
+      const SceneDescription &description = scene.description;
+      const SurfaceData       data        = problem.surface_data(1.);
       row.max_principal_strain  = data.extremes.max_principal_stretch - 1;
       const BondExtremes bond   = bond_extremes(data.bond);
       row.bond_sigma_rr_min     = bond.sigma_rr_min;
       row.bond_sigma_rtheta_max = bond.sigma_rtheta_max_abs;
       row.load_from_traction    = load_from_traction(data.outer);
       const double b            = row.nonlinear.half_chord;
-      row.hertz_load            = NipEstimates::hertz_load(parameters, b);
-      row.thin_layer_load       = NipEstimates::thin_layer_load(parameters, b);
+      row.hertz_load            = NipEstimates::hertz_load(description, b);
+      row.thin_layer_load       = NipEstimates::thin_layer_load(description, b);
       row.n_dofs                = problem.n_dofs();
       row.n_cells               = problem.n_cells();
     }
@@ -110,14 +107,12 @@ namespace rollnip
     /// load check, and flags a nip whose check is off (the mesh does not
     /// resolve it).
     void
-    evaluate_nip(const RollProblem               &nonlinear,
-                 const Parameters::AllParameters &parameters,
-                 const unsigned int               n,
-                 NipRow                          &row)
+    evaluate_nip(const Scene &nonlinear, const unsigned int n, NipRow &row)
     {
-      const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      const bool root =
+        Utilities::MPI::this_mpi_process(nonlinear.roll().communicator()) == 0;
       ConditionalOStream pcout(std::cout, root);
-      fill_nip_values(nonlinear, parameters, row);
+      fill_nip_values(nonlinear, row);
       const double difference =
         row.load_from_traction / row.nonlinear.nip_load - 1;
       pcout << "Nip " << n << ": P from the applied pressure "
@@ -173,17 +168,17 @@ namespace rollnip
       /// Builds the companion scene; one it cannot build (a mesh level
       /// that cannot hold the nip, say) leaves every nip without an
       /// estimate, and says why, instead of stopping the run.
-      explicit ErrorCompanion(const Parameters::AllParameters &p)
+      ErrorCompanion(const Parameters::AllParameters &p,
+                     const MPI_Comm                   communicator)
           : parameters(companion_parameters(p))
           , level(p.mesh.global_refinements)
       {
         SilenceStream quiet(std::cout);
         try
           {
-            problem = std::make_unique<RollProblem>(parameters, MPI_COMM_WORLD);
-            problem->setup();
-            contact = make_nip_solver(*problem, parameters);
-            control = std::make_unique<NipControl>(*contact, parameters);
+            scene = std::make_unique<Scene>(parameters, communicator);
+            control =
+              std::make_unique<NipControl>(scene->nip_solver(), parameters);
           }
         catch (const std::exception &e)
           {
@@ -236,7 +231,7 @@ namespace rollnip
           {
             NipRow c;
             c.nonlinear = r;
-            fill_nip_values(*problem, parameters, c);
+            fill_nip_values(*scene, c);
             e = estimate_errors(nip_numbers(row),
                                 nip_numbers(c),
                                 parameters.discretization.element,
@@ -259,17 +254,15 @@ namespace rollnip
       release()
       {
         control.reset();
-        contact.reset();
-        if (problem)
-          problem->silence_timer();
-        problem.reset();
+        if (scene)
+          scene->silence_timers();
+        scene.reset();
       }
 
       const Parameters::AllParameters parameters;
       const unsigned int              level;       ///< of the answer
       std::string                     unavailable; ///< why, if unbuilt
-      std::unique_ptr<RollProblem>    problem;
-      std::unique_ptr<NipSolver>      contact;
+      std::unique_ptr<Scene>          scene;
       std::unique_ptr<NipControl>     control;
     };
 
@@ -304,9 +297,11 @@ namespace rollnip
 
     /// Nip @p n's estimated errors on the screen, relative, in one line.
     void
-    print_error_estimate(const NipRow &row, const unsigned int n)
+    print_error_estimate(const NipRow      &row,
+                         const unsigned int n,
+                         const MPI_Comm     communicator)
     {
-      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+      if (Utilities::MPI::this_mpi_process(communicator) != 0)
         return;
       const ErrorEstimate &e = row.error;
       if (!e.available)
@@ -345,7 +340,7 @@ namespace rollnip
     {
       // A linear companion that failed is said once; its columns are nan.
       if (linear_companion && !result.converged &&
-          Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+          Utilities::MPI::this_mpi_process(problem.communicator()) == 0)
         std::cout << "The linear companion in " << dir << " did not converge ("
                   << result.message << "); its columns are nan" << std::endl;
       RunStatus status;
@@ -393,9 +388,10 @@ namespace rollnip
     why_stopped(const std::string &message,
                 const unsigned int n,
                 const std::size_t  total,
-                const std::size_t  converged)
+                const std::size_t  converged,
+                const MPI_Comm     communicator)
     {
-      if (!interrupt_requested(MPI_COMM_WORLD))
+      if (!interrupt_requested(communicator))
         return message;
       return interrupt_message() + " during nip " + std::to_string(n) + " of " +
              std::to_string(total) + "; " + std::to_string(converged) +
@@ -409,9 +405,10 @@ namespace rollnip
     write_nip_characteristic(const std::vector<NipRow> &rows,
                              const bool                 with_linear,
                              const double               cover_thickness,
-                             const std::string         &top)
+                             const std::string         &top,
+                             const MPI_Comm             communicator)
     {
-      const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
       ConditionalOStream pcout(std::cout, root);
       // A linear companion that did not converge has no value to show.
       auto linear_value = [with_linear](const NipRow &r, const double v) {
@@ -489,6 +486,7 @@ namespace rollnip
     void
     add_to_sweep(SweepPvd                        &pvd,
                  const Parameters::AllParameters &parameters,
+                 const SceneDescription          &scene,
                  const ContactResult             &r,
                  const std::string               &nip,
                  const std::string               &vtu)
@@ -496,8 +494,8 @@ namespace rollnip
       const double time = sweep_time(parameters, r);
       pvd.add(time, nip + vtu);
       pvd.add(time,
-              nip + (parameters.mating_roll.covered ? "/mating_roll" + vtu
-                                                    : "/indenter.vtp"),
+              nip +
+                (scene.covered_mate() ? "/mating_roll" + vtu : "/indenter.vtp"),
               1);
       pvd.add(time, nip + "/contact_pressure.vtp", 2);
     }
@@ -507,18 +505,18 @@ namespace rollnip
     /// companions if @p linear is given and their error estimates if
     /// @p companion is; returns why the sweep stopped, empty if it did not.
     std::string
-    sweep_nips(RollProblem                     &nonlinear,
-               NipSolver                       &contact,
+    sweep_nips(Scene                           &scene,
                NipControl                      &control,
-               RollProblem                     *linear,
-               NipSolver                       *linear_contact,
+               Scene                           *linear_scene,
                ErrorCompanion                  *companion,
                const Parameters::AllParameters &parameters,
                std::vector<NipRow>             &rows)
     {
-      const auto        &values = parameters.contact.values;
-      const bool         sweep  = values.size() > 1;
-      const std::string &top    = parameters.output.directory;
+      RollProblem       &nonlinear = scene.roll();
+      NipSolver         &contact   = scene.nip_solver();
+      const auto        &values    = parameters.contact.values;
+      const bool         sweep     = values.size() > 1;
+      const std::string &top       = parameters.output.directory;
       // The sweep as one ParaView time series per theory.
       const std::string meaning = sweep_time_meaning(parameters);
       SweepPvd          pvd(top + "/solution_sweep.pvd", meaning);
@@ -538,11 +536,11 @@ namespace rollnip
           row.nonlinear = control.solve(values[n]);
           if (row.nonlinear.converged)
             {
-              evaluate_nip(nonlinear, parameters, n + 1, row);
+              evaluate_nip(scene, n + 1, row);
               if (companion)
                 {
                   row.error = companion->estimate(row, values[n]);
-                  print_error_estimate(row, n + 1);
+                  print_error_estimate(row, n + 1, nonlinear.communicator());
                 }
             }
           nonlinear.set_output_directory(dir);
@@ -558,17 +556,21 @@ namespace rollnip
                                 dir,
                                 n + 1,
                                 parameters.output.write_vtu);
-          write_nip_pieces(nonlinear, parameters, row.nonlinear, dir);
+          write_nip_pieces(scene, row.nonlinear, dir);
           if (series && row.nonlinear.converged)
-            add_to_sweep(pvd, parameters, row.nonlinear, nip, vtu);
+            add_to_sweep(
+              pvd, parameters, scene.description, row.nonlinear, nip, vtu);
           if (!row.nonlinear.converged)
             return why_stopped(row.nonlinear.message,
                                n + 1,
                                values.size(),
-                               rows.size());
+                               rows.size(),
+                               nonlinear.communicator());
 
-          if (linear)
+          if (linear_scene)
             {
+              RollProblem *linear         = &linear_scene->roll();
+              NipSolver   *linear_contact = &linear_scene->nip_solver();
               row.linear = linear_contact->solve(row.nonlinear.theta0);
               linear->set_output_directory(dir + "/linear");
               write_nip(*linear, row.linear, dir + "/linear", true);
@@ -581,7 +583,7 @@ namespace rollnip
                   linear->write_vtu(n + 1, 1.);
                   linear_pvd.add(sweep_time(parameters, row.nonlinear),
                                  nip + "/linear" + vtu);
-                  if (parameters.mating_roll.covered)
+                  if (scene.description.covered_mate())
                     linear_pvd.add(sweep_time(parameters, row.nonlinear),
                                    nip + "/linear/mating_roll" + vtu,
                                    1);
@@ -600,20 +602,19 @@ namespace rollnip
                  const bool                       with_linear,
                  const std::string               &failure,
                  const Parameters::AllParameters &parameters,
-                 std::vector<NipRow>             *rows_out)
+                 const SceneDescription          &scene,
+                 std::vector<NipRow>             *rows_out,
+                 const MPI_Comm                   communicator)
     {
       const std::string &top = parameters.output.directory;
-      write_nip_characteristic(rows,
-                               with_linear,
-                               parameters.geometry.outer_radius -
-                                 parameters.geometry.inner_radius,
-                               top);
-      write_nip_report(rows, parameters, top);
+      write_nip_characteristic(
+        rows, with_linear, scene.roll.cover_thickness(), top, communicator);
+      write_nip_report(rows, parameters, scene, top, communicator);
       if (rows_out)
         *rows_out = rows;
       if (!failure.empty())
         {
-          if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+          if (Utilities::MPI::this_mpi_process(communicator) == 0)
             std::cerr << "rollnip: error: contact: " << failure
                       << "; the files in '" << top
                       << "' hold the last converged nip (contact.txt: the "
@@ -641,76 +642,57 @@ namespace rollnip
     return v;
   }
 
-  std::unique_ptr<NipSolver>
-  make_nip_solver(RollProblem                     &roll,
-                  const Parameters::AllParameters &parameters)
-  {
-    if (parameters.mating_roll.covered)
-      return std::make_unique<TwoRollContact>(roll, parameters);
-    return std::make_unique<InverseContact>(roll, parameters);
-  }
-
   int
   run_nip_study(const Parameters::AllParameters &parameters,
+                const MPI_Comm                   communicator,
                 std::vector<NipRow>             *rows_out)
   {
     std::vector<NipRow> rows;
     std::string         failure;
     bool                with_linear = false;
-    // The problems (and the companion's) are destroyed inside the handler
+    // The linear companion: same scene, linear theory, same theta0.
+    Parameters::AllParameters linear_parameters = parameters;
+    linear_parameters.material.theory           = Parameters::Theory::linear;
+    linear_parameters.output.print_timing       = false;
+    // The scenes (and the companion's) are destroyed inside the handler
     // when something throws, so that their timers do not report on an
     // exception in flight.
-    std::unique_ptr<RollProblem>    nonlinear_problem, linear;
+    std::unique_ptr<Scene>          scene, linear;
     std::unique_ptr<ErrorCompanion> companion;
     try
       {
-        nonlinear_problem =
-          std::make_unique<RollProblem>(parameters, MPI_COMM_WORLD);
-        RollProblem &nonlinear = *nonlinear_problem;
-        nonlinear.setup();
-        const std::unique_ptr<NipSolver> contact =
-          make_nip_solver(nonlinear, parameters);
-        NipControl control(*contact, parameters);
-
-        // The linear companion: same scene, linear theory, same theta0.
-        Parameters::AllParameters linear_parameters = parameters;
-        linear_parameters.material.theory     = Parameters::Theory::linear;
-        linear_parameters.output.print_timing = false;
-        std::unique_ptr<NipSolver> linear_contact;
+        scene = std::make_unique<Scene>(parameters, communicator);
+        NipControl control(scene->nip_solver(), parameters);
         if (parameters.contact.compare_linear)
-          {
-            linear =
-              std::make_unique<RollProblem>(linear_parameters, MPI_COMM_WORLD);
-            linear->setup();
-            linear_contact = make_nip_solver(*linear, linear_parameters);
-          }
+          linear = std::make_unique<Scene>(linear_parameters, communicator);
 
         // The error estimate's companion (Accuracy/Error estimate).
         if (parameters.accuracy.error_estimate)
-          companion = std::make_unique<ErrorCompanion>(parameters);
+          companion =
+            std::make_unique<ErrorCompanion>(parameters, communicator);
 
-        failure = sweep_nips(nonlinear,
-                             *contact,
-                             control,
-                             linear.get(),
-                             linear_contact.get(),
-                             companion.get(),
-                             parameters,
-                             rows);
+        failure = sweep_nips(
+          *scene, control, linear.get(), companion.get(), parameters, rows);
 
         with_linear = static_cast<bool>(linear);
       }
     catch (...)
       {
-        for (auto *p : {nonlinear_problem.get(), linear.get()})
-          if (p)
-            p->silence_timer();
+        for (auto *s : {scene.get(), linear.get()})
+          if (s)
+            s->silence_timers();
         companion.reset();
         linear.reset();
-        nonlinear_problem.reset();
+        scene.reset();
         throw;
       }
 
-    return finish_sweep(rows, with_linear, failure, parameters, rows_out);
+    return finish_sweep(rows,
+                        with_linear,
+                        failure,
+                        parameters,
+                        scene->description,
+                        rows_out,
+                        communicator);
   }
 } // namespace rollnip

@@ -1,8 +1,11 @@
-#ifndef rollnip_contact_nip_report_h
-#define rollnip_contact_nip_report_h
+#ifndef rollnip_app_nip_report_h
+#define rollnip_app_nip_report_h
 
-#include <rollnip/contact/nip_study.h>
+#include <deal.II/base/mpi.h>
+
+#include <rollnip/app/nip_study.h>
 #include <rollnip/parameters.h>
+#include <rollnip/scene/scene_description.h>
 
 #include <string>
 #include <vector>
@@ -18,12 +21,15 @@ namespace rollnip
    * The nip report (doc/engineering_inputs.md, section 4): per nip the
    * line load in Contact/Load unit, the full nip width 2b, u0, peak and
    * mean pressure, the dwell time at Contact/Surface speed and the modulus
-   * used, printed and written to @p top/nip_report.csv by rank 0.
+   * used (of the rolls of @p scene), printed and written to
+   * @p top/nip_report.csv by rank 0 of @p communicator.
    */
   void
   write_nip_report(const std::vector<NipRow>       &rows,
                    const Parameters::AllParameters &parameters,
-                   const std::string               &top);
+                   const SceneDescription          &scene,
+                   const std::string               &top,
+                   MPI_Comm                         communicator);
 } // namespace rollnip
 
 #endif

@@ -2,20 +2,22 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <rollnip/app/adaptive_grading.h>
+#include <rollnip/app/nip_study.h>
+#include <rollnip/app/refinement_study.h>
 #include <rollnip/boundary_ids.h>
-#include <rollnip/contact/nip_study.h>
-#include <rollnip/geometry/adaptive_grading.h>
 #include <rollnip/geometry/roll_mesh.h>
 #include <rollnip/output/atomic_file.h>
 #include <rollnip/problem.h>
 #include <rollnip/run_errors.h>
-#include <rollnip/study/refinement_study.h>
+#include <rollnip/scene/scene_builder.h>
 
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 namespace rollnip
@@ -101,13 +103,15 @@ namespace rollnip
 
     /// One run of the scene; returns the exit code.
     int
-    run_scene(const Parameters::AllParameters &given, Run &run)
+    run_scene(const Parameters::AllParameters &given,
+              Run                             &run,
+              const MPI_Comm                   communicator)
     {
-      const Parameters::AllParameters p = adapt_grading(given);
+      const Parameters::AllParameters p = adapt_grading(given, communicator);
       if (p.contact.mode != Parameters::ContactMode::none)
         {
           std::vector<NipRow> rows;
-          const int           code = run_nip_study(p, &rows);
+          const int           code = run_nip_study(p, communicator, &rows);
           if (code != 0 || rows.empty())
             return code != 0 ? code : 1;
           const NipRow &r = rows[0];
@@ -121,11 +125,13 @@ namespace rollnip
                              r.bond_sigma_rtheta_max};
           return 0;
         }
-      RollProblem problem(p, MPI_COMM_WORLD);
+      // Destroyed inside the handler when something throws, so that its
+      // timer does not report on an exception in flight.
+      auto scene = std::make_unique<Scene>(p, communicator);
       try
         {
-          problem.setup();
-          const RunStatus status = problem.run();
+          RollProblem    &problem = scene->roll();
+          const RunStatus status  = problem.run();
           problem.write_results(status);
           if (!status.converged)
             {
@@ -144,7 +150,8 @@ namespace rollnip
         }
       catch (...)
         {
-          problem.silence_timer();
+          scene->silence_timers();
+          scene.reset();
           throw;
         }
       return 0;
@@ -265,13 +272,16 @@ namespace rollnip
     /// process) and memory (all processes); returns the exit code, and in
     /// @p thrown what a failed run threw.
     int
-    timed_run(const Parameters::AllParameters &p, Run &run, std::string &thrown)
+    timed_run(const Parameters::AllParameters &p,
+              Run                             &run,
+              std::string                     &thrown,
+              const MPI_Comm                   communicator)
     {
       const auto start = std::chrono::steady_clock::now();
       int        code  = 0;
       try
         {
-          code = run_scene(p, run);
+          code = run_scene(p, run, communicator);
         }
       catch (const std::exception &e)
         {
@@ -283,10 +293,10 @@ namespace rollnip
       run.wall = Utilities::MPI::max(std::chrono::duration<double>(
                                        std::chrono::steady_clock::now() - start)
                                        .count(),
-                                     MPI_COMM_WORLD);
+                                     communicator);
       Utilities::System::MemoryStats memory;
       Utilities::System::get_memory_stats(memory);
-      run.memory = Utilities::MPI::sum(memory.VmHWM / 1024., MPI_COMM_WORLD);
+      run.memory = Utilities::MPI::sum(memory.VmHWM / 1024., communicator);
       return code;
     }
 
@@ -295,10 +305,12 @@ namespace rollnip
     std::string
     run_all(const Parameters::AllParameters &parameters,
             const std::vector<Variant>      &variants,
-            std::vector<Run>                &runs)
+            std::vector<Run>                &runs,
+            const MPI_Comm                   communicator)
     {
-      ConditionalOStream pcout(
-        std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
+      ConditionalOStream pcout(std::cout,
+                               Utilities::MPI::this_mpi_process(communicator) ==
+                                 0);
       for (unsigned int vi = 0; vi < variants.size(); ++vi)
         for (const unsigned int level : parameters.study.levels)
           {
@@ -309,7 +321,7 @@ namespace rollnip
                   << std::endl;
             Run         run;
             std::string thrown;
-            const int   code = timed_run(p, run, thrown);
+            const int   code = timed_run(p, run, thrown, communicator);
             run.variant      = vi;
             run.level        = level;
             if (code != 0)
@@ -529,9 +541,10 @@ namespace rollnip
   } // namespace
 
   int
-  run_refinement_study(const Parameters::AllParameters &parameters)
+  run_refinement_study(const Parameters::AllParameters &parameters,
+                       const MPI_Comm                   communicator)
   {
-    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
     ConditionalOStream pcout(std::cout, root);
     const bool         contact =
       parameters.contact.mode != Parameters::ContactMode::none;
@@ -540,7 +553,8 @@ namespace rollnip
     const std::string         &top      = parameters.output.directory;
 
     std::vector<Run>  runs;
-    const std::string failure = run_all(parameters, variants, runs);
+    const std::string failure =
+      run_all(parameters, variants, runs, communicator);
 
     // One table per element; errors against the extrapolated value of
     // that element's sequence.

@@ -1,7 +1,6 @@
 #include <deal.II/base/mpi.h>
 
-#include <rollnip/contact/nip_report.h>
-#include <rollnip/material/material_table.h>
+#include <rollnip/app/nip_report.h>
 #include <rollnip/output/atomic_file.h>
 
 #include <cmath>
@@ -71,29 +70,33 @@ namespace rollnip
       return row;
     }
 
-    void
-    print_report(const std::vector<ReportRow>    &rows,
-                 const Parameters::AllParameters &p)
+    /// E of @p roll's surface layer and where it came from, as in the
+    /// report's heading.
+    std::string
+    modulus_text(const RollDescription &roll)
     {
-      const auto  &c     = p.contact;
-      const double E     = 3 * surface_shear_modulus(p.material);
-      const bool   dwell = c.surface_speed > 0;
+      std::ostringstream s;
+      s << std::setprecision(4) << roll.surface_layer().youngs_modulus()
+        << " MPa"
+        << (roll.modulus_from_hardness()
+              ? ", an estimate from hardness " + roll.hardness_source
+              : ", from C1 and C2");
+      return s.str();
+    }
+
+    void
+    print_report(const std::vector<ReportRow> &rows,
+                 const Parameters::Contact    &c,
+                 const SceneDescription       &scene)
+    {
+      const bool dwell = c.surface_speed > 0;
       std::cout << std::endl
-                << std::defaultfloat
-                << "Nip report (E = " << std::setprecision(4) << E << " MPa"
-                << (p.material.hardness_modulus > 0
-                      ? ", an estimate from hardness " +
-                          p.material.hardness_description
-                      : ", from C1 and C2");
+                << std::defaultfloat << std::setprecision(4)
+                << "Nip report (E = " << modulus_text(scene.roll);
       if (dwell)
         std::cout << "; surface speed " << c.surface_speed << " m/min";
-      if (p.mating_roll.covered)
-        std::cout << "; mating roll E = "
-                  << 3 * surface_shear_modulus(p.mating_roll.material) << " MPa"
-                  << (p.mating_roll.material.hardness_modulus > 0
-                        ? ", an estimate from hardness " +
-                            p.mating_roll.material.hardness_description
-                        : ", from C1 and C2");
+      if (const RollDescription *mate = scene.covered_mate())
+        std::cout << "; mating roll E = " << modulus_text(*mate);
       if (c.load_unit.is_total_force())
         std::cout << "; total force on a face of " << c.load_unit.face_length
                   << " mm";
@@ -120,19 +123,20 @@ namespace rollnip
     }
 
     void
-    write_report_csv(const std::vector<ReportRow>    &rows,
-                     const Parameters::AllParameters &p,
-                     const std::string               &file)
+    write_report_csv(const std::vector<ReportRow> &rows,
+                     const Parameters::Contact    &c,
+                     const SceneDescription       &scene,
+                     const std::string            &file)
     {
-      const auto  &c        = p.contact;
-      const double E        = 3 * surface_shear_modulus(p.material);
+      const double E        = scene.roll.surface_layer().youngs_modulus();
       const bool   dwell    = c.surface_speed > 0;
-      const bool   estimate = p.material.hardness_modulus > 0;
+      const bool   estimate = scene.roll.modulus_from_hardness();
       // A covered mating roll: its modulus beside the roll's.
-      const bool   two_rolls = p.mating_roll.covered;
-      const double E_mate =
-        two_rolls ? 3 * surface_shear_modulus(p.mating_roll.material) : 0;
-      const bool mate_estimate = p.mating_roll.material.hardness_modulus > 0;
+      const RollDescription *mate      = scene.covered_mate();
+      const bool             two_rolls = mate != nullptr;
+      const double           E_mate =
+        two_rolls ? mate->surface_layer().youngs_modulus() : 0;
+      const bool mate_estimate = two_rolls && mate->modulus_from_hardness();
       write_atomically(file, [&](std::ostream &out) {
         out << "nip," << c.load_unit.column_name()
             << ",line_load_N_per_mm,nip_width_2b_mm,indentation_u0_mm,"
@@ -167,15 +171,20 @@ namespace rollnip
   void
   write_nip_report(const std::vector<NipRow>       &rows,
                    const Parameters::AllParameters &parameters,
-                   const std::string               &top)
+                   const SceneDescription          &scene,
+                   const std::string               &top,
+                   const MPI_Comm                   communicator)
   {
-    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+    if (Utilities::MPI::this_mpi_process(communicator) != 0)
       return;
     std::vector<ReportRow> report;
     for (const auto &r : rows)
       report.push_back(report_row(r, parameters.contact));
-    print_report(report, parameters);
+    print_report(report, parameters.contact, scene);
     make_directories(top);
-    write_report_csv(report, parameters, top + "/nip_report.csv");
+    write_report_csv(report,
+                     parameters.contact,
+                     scene,
+                     top + "/nip_report.csv");
   }
 } // namespace rollnip
