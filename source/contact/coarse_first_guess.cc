@@ -21,19 +21,18 @@ namespace rollnip
     /// first guess misses by anyway.
     constexpr double coarse_control_tolerance = 1e-3;
 
-    /// The scene of the coarse solve: both meshes at level 0, no files,
+    /// The scene of the coarse solve: the mesh at level 0, no files,
     /// no companions, its iterations stopped at the level of its error.
     Parameters::AllParameters
     coarse_parameters(const Parameters::AllParameters &p)
     {
-      Parameters::AllParameters c           = p;
-      c.mesh.global_refinements             = 0;
-      c.mating_roll.mesh.global_refinements = 0;
-      c.contact.compare_linear              = false;
-      c.output.print_timing                 = false;
-      c.output.write_vtu                    = false;
-      c.output.write_csv                    = false;
-      c.accuracy.error_estimate             = false;
+      Parameters::AllParameters c = p;
+      c.mesh.global_refinements   = 0;
+      c.contact.compare_linear    = false;
+      c.output.print_timing       = false;
+      c.output.write_vtu          = false;
+      c.output.write_csv          = false;
+      c.accuracy.error_estimate   = false;
       c.contact.control_tolerance =
         std::max(p.contact.control_tolerance, coarse_control_tolerance);
       c.contact.tolerance =
@@ -50,10 +49,12 @@ namespace rollnip
     const bool controlled =
       p.contact.mode == Parameters::ContactMode::load ||
       p.contact.mode == Parameters::ContactMode::indentation;
-    const bool coarser =
-      p.mesh.global_refinements > 0 ||
-      (p.mating_roll.covered && p.mating_roll.mesh.global_refinements > 0);
-    return controlled && coarser;
+    // Not for two covered rolls: their P(theta0) depends on the history of
+    // the mating roll's refits by about 1e-4, and a changed path to the
+    // first nip can leave a later target stalled just off the control
+    // tolerance (parameters/two_rolls.prm at 60 N/mm).
+    return controlled && !p.mating_roll.covered &&
+           p.mesh.global_refinements > 0;
   }
 
   CoarseFirstGuess
