@@ -1,7 +1,6 @@
 #include <deal.II/base/mpi.h>
 
 #include <rollnip/contact/coarse_first_guess.h>
-
 #include <rollnip/contact/nip_control.h>
 #include <rollnip/contact/nip_estimates.h>
 #include <rollnip/interrupt.h>
