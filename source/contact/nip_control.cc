@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <rollnip/contact/coarse_first_guess.h>
 #include <rollnip/contact/nip_control.h>
 #include <rollnip/contact/nip_estimates.h>
 #include <rollnip/interrupt.h>
@@ -57,6 +58,42 @@ namespace rollnip
     return std::asin(std::min(b / R0, IterationControls::max_first_guess_sine));
   }
 
+  double
+  NipControl::cold_guess(const double target)
+  {
+    if (!coarse_first_guess_pays(parameters))
+      return first_guess(target);
+    const CoarseFirstGuess c =
+      coarse_first_guess(parameters, target, contact.communicator());
+    n_coarse += c.n_solves;
+    ConditionalOStream pcout(
+      std::cout, Utilities::MPI::this_mpi_process(contact.communicator()) == 0);
+    if (c.theta > 0)
+      {
+        slope_hint  = c.slope;
+        hint_target = target;
+        pcout << "First guess from mesh level 0: theta0 = " << std::fixed
+              << std::setprecision(6) << c.theta * deg << " deg (" << c.n_solves
+              << " coarse contact solves, " << std::setprecision(3) << c.seconds
+              << " s)" << std::endl;
+        return c.theta;
+      }
+    pcout << "No first guess from mesh level 0 (" << c.failure
+          << "): starting from Hertz and the thin layer" << std::endl;
+    return first_guess(target);
+  }
+
+  double
+  NipControl::local_slope(const double target) const
+  {
+    const std::vector<Point> near = nearest_first(target);
+    if (near.size() < 2 || near[0].theta == near[1].theta)
+      return 0;
+    const double slope =
+      std::log(near[0].q / near[1].q) / std::log(near[0].theta / near[1].theta);
+    return std::isfinite(slope) && slope > 0 ? slope : 0;
+  }
+
   std::vector<NipControl::Point>
   NipControl::nearest_first(const double target) const
   {
@@ -76,7 +113,8 @@ namespace rollnip
     const double             default_slope =
       by_load ? IterationControls::default_slope_load
                           : IterationControls::default_slope_indentation;
-    double slope = default_slope;
+    double slope =
+      slope_hint > 0 && target == hint_target ? slope_hint : default_slope;
     if (near.size() > 1 && near[0].theta != near[1].theta)
       slope = std::log(near[0].q / near[1].q) /
               std::log(near[0].theta / near[1].theta);
@@ -235,7 +273,7 @@ namespace rollnip
     const double       theta_max = contact.max_nip_angle();
 
     double theta            = guess > 0           ? guess
-                              : converged.empty() ? first_guess(target)
+                              : converged.empty() ? cold_guess(target)
                                                   : predict(target);
     theta                   = std::min(theta, theta_max);
     double        failed_at = std::numeric_limits<double>::max();

@@ -17,8 +17,10 @@ namespace rollnip
    * log q against log theta0 converges in a few contact solves:
    *  - it starts from the inverse quadratic (in log-log) through three
    *    converged nips of the sweep spread towards the target (the power
-   *    law through two while there are fewer), or, for the first nip, a
-   *    guess below the half-width of Hertz and of the thin layer (both
+   *    law through two while there are fewer); for the first nip, from
+   *    the theta0 and the slope of the same target solved on the scene at
+   *    mesh level 0 (coarse_first_guess.h), or, on a level-0 scene, from
+   *    a guess below the half-width of Hertz and of the thin layer (both
    *    softer than a bonded layer, so both too wide);
    *  - a contact solve that fails is stepped back from, halfway to the
    *    largest converged theta0 below it;
@@ -46,6 +48,18 @@ namespace rollnip
       return n_solves;
     }
 
+    /// Contact solves on the level-0 scene for first guesses so far.
+    unsigned int
+    n_coarse_solves() const
+    {
+      return n_coarse;
+    }
+
+    /// The slope d log q / d log theta0 of the secant through the two
+    /// converged nips nearest to @p target (in log q), 0 with fewer.
+    double
+    local_slope(const double target) const;
+
   private:
     struct Point
     {
@@ -57,9 +71,16 @@ namespace rollnip
     std::vector<Point>
     nearest_first(const double target) const;
 
-    /// The first theta0 to try for @p target.
+    /// The first theta0 to try for @p target: from Hertz and the thin
+    /// layer.
     double
     first_guess(const double target) const;
+
+    /// The first theta0 to try for a cold @p target: from the level-0
+    /// scene if the scene is finer (its slope is kept for the second
+    /// step), else first_guess().
+    double
+    cold_guess(const double target);
 
     /// The first theta0 to try for @p target once nips have converged:
     /// the inverse quadratic (log theta0 in log q) through three of them
@@ -119,6 +140,11 @@ namespace rollnip
     const bool                       by_load;
     std::vector<Point>               converged; ///< sorted by theta
     unsigned int                     n_solves = 0;
+    unsigned int                     n_coarse = 0;
+    /// The slope of log q against log theta0 of the level-0 scene at the
+    /// cold target hint_target, 0 if none: the secant's slope while one
+    /// nip of that target has converged.
+    double slope_hint = 0, hint_target = 0;
   };
 
   /// The nip for @p target with a NipControl of its own (no sweep).
