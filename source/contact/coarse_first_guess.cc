@@ -2,10 +2,10 @@
 
 #include <rollnip/contact/coarse_first_guess.h>
 #include <rollnip/contact/nip_control.h>
-#include <rollnip/contact/nip_study.h>
 #include <rollnip/output/silence_cerr.h>
 #include <rollnip/problem.h>
 #include <rollnip/run_errors.h>
+#include <rollnip/scene/scene_builder.h>
 #include <rollnip/solvers/iteration_controls.h>
 
 #include <algorithm>
@@ -65,16 +65,13 @@ namespace rollnip
     const Parameters::AllParameters coarse = coarse_parameters(p);
     CoarseFirstGuess                guess;
     Timer                           timer;
-    std::unique_ptr<RollProblem>    problem;
+    std::unique_ptr<Scene>          scene;
     try
       {
         SilenceStream quiet(std::cout);
-        problem = std::make_unique<RollProblem>(coarse, comm);
-        problem->setup();
-        problem->set_step_log(false);
-        const std::unique_ptr<NipSolver> contact =
-          make_nip_solver(*problem, coarse);
-        NipControl          control(*contact, coarse);
+        scene = std::make_unique<Scene>(coarse, comm);
+        scene->roll().set_step_log(false);
+        NipControl          control(scene->nip_solver(), coarse);
         const ContactResult r = control.solve(target);
         guess.n_solves        = control.n_contact_solves();
         if (r.converged)
@@ -87,15 +84,15 @@ namespace rollnip
       }
     catch (const std::exception &e)
       {
-        if (problem)
-          problem->silence_timer();
+        if (scene)
+          scene->silence_timers();
         if (is_local_error(e))
           throw;
         guess.theta   = 0;
         guess.failure = one_line_message(e);
       }
-    if (problem)
-      problem->silence_timer();
+    if (scene)
+      scene->silence_timers();
     guess.seconds = timer.wall_time();
     return guess;
   }

@@ -19,7 +19,10 @@
 //    solves are printed beside them; each costs a quarter of a level-1
 //    solve or less.
 
-#include <rollnip/contact/nip_study.h>
+#include <rollnip/contact/nip_control.h>
+#include <rollnip/contact/nip_solver.h>
+#include <rollnip/problem.h>
+#include <rollnip/scene/scene_builder.h>
 
 #include "test_tools.h"
 
@@ -90,11 +93,9 @@ namespace
               const std::string &mode,
               const double       target)
   {
-    const auto  p = scene(cover, mode, target);
-    RollProblem problem(p, MPI_COMM_WORLD);
-    problem.setup();
-    const auto          contact = make_nip_solver(problem, p);
-    NipControl          control(*contact, p);
+    const auto          p = scene(cover, mode, target);
+    Scene               scene(p, MPI_COMM_WORLD);
+    NipControl          control(scene.nip_solver(), p);
     const ContactResult r    = control.solve(target);
     const std::string   what = cover.name + ", " + mode + " " +
                              testing::num(target) +
@@ -105,11 +106,9 @@ namespace
         return control.n_contact_solves();
       }
     // The nip-angle solve of a problem of its own at the theta0 found.
-    const auto  pa = scene(cover, "nip angle", r.theta0 * 180 / numbers::PI);
-    RollProblem reference(pa, MPI_COMM_WORLD);
-    reference.setup();
-    const auto          by_angle  = make_nip_solver(reference, pa);
-    const ContactResult a         = by_angle->solve(r.theta0);
+    const auto pa = scene(cover, "nip angle", r.theta0 * 180 / numbers::PI);
+    Scene      reference(pa, MPI_COMM_WORLD);
+    const ContactResult a         = reference.nip_solver().solve(r.theta0);
     const double        q         = mode == "load" ? a.nip_load : a.indentation;
     const double        tolerance = p.mating_roll.covered ? 5e-4 : 1e-5;
     checker.check(
