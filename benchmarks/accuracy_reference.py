@@ -15,7 +15,7 @@ estimated one and their ratio, the effectivity.
 
 Usage: [ROLLNIP_SCENE=run30|layered] [ROLLNIP_REFERENCE=fixed|fitted]
        python3 benchmarks/accuracy_reference.py
-           [--quick] [--front] [KEY=VALUE ...]
+           [--quick] [--front] [--target] [KEY=VALUE ...]
     --quick     reference at level 2 only (minutes less; for tuning)
     --front     the speed-accuracy front instead: every element, mesh
                 (nip-fitted, fixed), level and control mode (indentation
@@ -23,7 +23,12 @@ Usage: [ROLLNIP_SCENE=run30|layered] [ROLLNIP_REFERENCE=fixed|fitted]
                 theta0), timed without the error estimate, with the
                 largest true error of P, u0, b, the peak pressure and the
                 bond shear stress over the nips; writes the table as CSV
-                and doc-style figure data to benchmarks/results/
+                and doc-style figure data to benchmarks/results/; then the
+                time per nip to reach 1 %, 0.1 % and 0.01 % in P and in b
+                per element, mesh and mode, read off that table
+    --target    Accuracy/Target = 1 %, 0.1 %, 0.01 % on P in each mode:
+                what the program chose, the runs it needed, its wall time
+                per nip (start-up subtracted) and the true error of P
     KEY=VALUE   extra Mesh entries for the runs under test, e.g.
                 "Nip cells=6"
 
@@ -215,6 +220,85 @@ def front(tmp, ref_levels):
     return header, rows
 
 
+def time_to_reach(header, rows):
+    """From the front: the least time per nip at which each element, mesh
+    and mode reaches 1 %, 0.1 % and 0.01 % in P and in b."""
+    col = {name: i for i, name in enumerate(header)}
+    out = []
+    for mode in FRONT_MODES:
+        for element in ("Q1-P0", "Q2-P1"):
+            for mesh in ("fitted", "fixed"):
+                mine = [r for r in rows if r[1] == mode and r[2] == element
+                        and r[3] == mesh and r[6] != "failed"]
+                line = [mode, element, mesh]
+                for name in ("P err", "b err"):
+                    for level in (1e-2, 1e-3, 1e-4):
+                        t = [float(r[6]) for r in mine
+                             if float(r[col[name]]) <= level]
+                        line.append(f"{min(t):.2f}" if t else "-")
+                out.append(line)
+    head = ["mode", "element", "mesh"] + [
+        f"{q} {lv}" for q in ("P", "b") for lv in ("1 %", "0.1 %", "0.01 %")]
+    print("\ntime per nip [s] to reach a relative error in P and b")
+    print("| " + " | ".join(head) + " |")
+    print("|" + "---|" * len(head))
+    for line in out:
+        print("| " + " | ".join(line) + " |")
+
+
+def target_runs(tmp):
+    """Accuracy/Target on P in each mode against the reference."""
+    ref = reference(tmp, [3], FRONT_KEYS)[0]
+    start = start_up_seconds()
+    header = ["mode", "target", "chosen", "runs", "s per nip", "P err"]
+    print("| " + " | ".join(header) + " |")
+    print("|" + "---|" * len(header))
+    rows = []
+    for mode, column in FRONT_MODES.items():
+        targets = [r[column] for r in ref]
+        for target in ("1 %", "0.1 %", "0.01 %"):
+            text = open(BASE).read() + SCENE_TEXT + f"""
+subsection Contact
+  set Mode = {mode}
+  set Values = {', '.join(f'{v:.12g}' for v in targets)}
+  set Compare with linear theory = false
+end
+subsection Accuracy
+  set Target = {target}
+  set Target quantities = P
+end
+subsection Output
+  set Directory = {tmp}/target
+  set Write VTU = false
+  set Print timing = false
+end
+"""
+            shutil.rmtree(os.path.join(tmp, "target"), ignore_errors=True)
+            prm = os.path.join(tmp, "target.prm")
+            with open(prm, "w") as f:
+                f.write(text)
+            t0 = time.perf_counter()
+            p = subprocess.run([ROLLNIP, prm], capture_output=True, text=True)
+            wall = time.perf_counter() - t0
+            chosen = re.search(r"met with (\S+) at mesh level (\d+) after "
+                               r"(\d+) run", p.stdout)
+            if p.returncode != 0 or not chosen:
+                row = [mode, target, "not met", "-", f"{wall:.2f}", "-"]
+            else:
+                with open(os.path.join(tmp, "target",
+                                       "nip_characteristic.csv")) as f:
+                    got = [float(r["P_N_per_mm"]) for r in csv.DictReader(f)]
+                err = max(abs(a / b[1] - 1) for a, b in zip(got, ref))
+                row = [mode, target,
+                       f"{chosen.group(1)} level {chosen.group(2)}",
+                       chosen.group(3),
+                       f"{max(wall - start, 0) / len(targets):.2f}",
+                       f"{err:.1e}"]
+            rows.append(row)
+            print("| " + " | ".join(row) + " |", flush=True)
+    return header, rows
+
+
 def write_csv(stem, header, rows):
     """The table as benchmarks/results/STEM-<date>.csv."""
     os.makedirs(os.path.join(ROOT, "benchmarks", "results"), exist_ok=True)
@@ -228,7 +312,8 @@ def write_csv(stem, header, rows):
 
 
 def main():
-    args = [a for a in sys.argv[1:] if a not in ("--quick", "--front")]
+    args = [a for a in sys.argv[1:]
+            if a not in ("--quick", "--front", "--target")]
     quick = "--quick" in sys.argv[1:]
     if "--front" in sys.argv[1:]:
         if not os.access(ROLLNIP, os.X_OK):
@@ -236,6 +321,12 @@ def main():
         with tempfile.TemporaryDirectory(prefix="rollnip-front.") as tmp:
             header, rows = front(tmp, [2] if quick else [2, 3])
         write_csv(f"accuracy-front-{SCENE}", header, rows)
+        time_to_reach(header, rows)
+        return
+    if "--target" in sys.argv[1:]:
+        with tempfile.TemporaryDirectory(prefix="rollnip-target.") as tmp:
+            header, rows = target_runs(tmp)
+        write_csv(f"accuracy-target-{SCENE}", header, rows)
         return
     extra = []
     for a in args:

@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <rollnip/app/accuracy_target.h>
 #include <rollnip/app/adaptive_grading.h>
 #include <rollnip/app/face_run.h>
 #include <rollnip/app/nip_study.h>
@@ -124,6 +125,8 @@ main(int argc, char **argv)
     parameters.read(file);
     Parameters::Face face;
     face.read(file);
+    Parameters::AccuracyTarget accuracy;
+    accuracy.read(file);
     if (root)
       std::cout << EngineeringInputs::describe(parameters);
     if (face.enabled && !validate_only)
@@ -132,6 +135,8 @@ main(int argc, char **argv)
       return validate_mesh(parameters, file, communicator);
     if (!parameters.study.levels.empty())
       return run_refinement_study(parameters, communicator);
+    if (accuracy.target > 0)
+      return run_to_accuracy_target(parameters, accuracy, communicator);
     const Parameters::AllParameters graded =
       adapt_grading(parameters, communicator);
     if (graded.contact.mode != Parameters::ContactMode::none)

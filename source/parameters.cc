@@ -1,5 +1,6 @@
 #include <deal.II/base/numbers.h>
 
+#include <rollnip/app/accuracy_target.h>
 #include <rollnip/cost_estimate.h>
 #include <rollnip/engineering_inputs.h>
 #include <rollnip/face/face_parameters.h>
@@ -904,6 +905,7 @@ namespace rollnip
       Study::declare(prm);
       Accuracy::declare(prm);
       Face::declare(prm);
+      AccuracyTarget::declare(prm);
     }
 
     void

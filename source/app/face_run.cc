@@ -2,7 +2,7 @@
 
 #include <rollnip/app/cross_section_law.h>
 #include <rollnip/app/face_run.h>
-#include <rollnip/contact/nip_report.h>
+#include <rollnip/app/nip_report.h>
 #include <rollnip/face/crown.h>
 #include <rollnip/face/face_solver.h>
 #include <rollnip/output/atomic_file.h>
@@ -333,7 +333,8 @@ namespace rollnip
 
   int
   run_face(const Parameters::AllParameters &parameters,
-           const Parameters::Face          &face)
+           const Parameters::Face          &face,
+           MPI_Comm                         communicator)
   {
     const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
     const std::string &dir = parameters.output.directory;

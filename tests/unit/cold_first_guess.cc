@@ -94,8 +94,8 @@ namespace
               const double       target)
   {
     const auto          p = scene(cover, mode, target);
-    Scene               scene(p, MPI_COMM_WORLD);
-    NipControl          control(scene.nip_solver(), p);
+    Scene               run(p, MPI_COMM_WORLD);
+    NipControl          control(run.nip_solver(), p);
     const ContactResult r    = control.solve(target);
     const std::string   what = cover.name + ", " + mode + " " +
                              testing::num(target) +

@@ -1,0 +1,77 @@
+#ifndef rollnip_app_accuracy_target_h
+#define rollnip_app_accuracy_target_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <rollnip/parameters.h>
+#include <rollnip/postprocess/error_estimate.h>
+
+#include <string>
+#include <vector>
+
+namespace rollnip
+{
+  namespace Parameters
+  {
+    /// Accuracy/Target and Accuracy/Target quantities: the relative error
+    /// a contact run must reach, and the numbers it applies to
+    /// (doc/accuracy.md, "An accuracy target").
+    struct AccuracyTarget
+    {
+      /// Relative error, e.g. 1e-3 for "0.1 %"; 0: off (the mesh and
+      /// element of the file are used as they are).
+      double                          target = 0;
+      std::vector<NipQuantity::Index> quantities;
+
+      /// Declares the two entries in subsection Accuracy.
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+      /// The entries of the parameter file @p filename (read with every
+      /// subsection declared), checked against the rest of the scene.
+      void
+      read(const std::string &filename);
+    };
+  } // namespace Parameters
+
+  /// One (element, level) the accuracy target may choose.
+  struct AccuracyCandidate
+  {
+    Parameters::Element element;
+    unsigned int        level;
+    double              cost; ///< relative: DoFs of the run's roll
+  };
+
+  /// The candidates, cheapest first: Q1-P0 at levels 0 to 4 and Q2-P1 at
+  /// levels 0 to 3, ordered by their DoFs on the builtin mesh (Q2-P1 has
+  /// about 3.5 times the DoFs of Q1-P0 at the same level).
+  std::vector<AccuracyCandidate>
+  accuracy_candidates();
+
+  /// The predicted largest relative error of quantity @p q of the default
+  /// scene's nips for @p candidate under @p mode, from the measured
+  /// level-0 errors and the orders of error_order() (doc/accuracy.md).
+  double
+  predicted_error(const AccuracyCandidate      &candidate,
+                  const NipQuantity::Index      q,
+                  const Parameters::ContactMode mode);
+
+  /**
+   * The contact run of @p parameters to the accuracy @p target: solves the
+   * sweep with its error estimate at the cheapest (element, level) the
+   * cost model predicts to meet it, calibrates the model on each estimate
+   * and moves to the next cheaper-predicted candidate until every nip's
+   * estimated error of each target quantity is within the target. The
+   * results files are those of the chosen run; accuracy_target.csv lists
+   * every candidate tried. Returns the exit code: 1 (said) if no candidate
+   * met the target or a run failed.
+   */
+  int
+  run_to_accuracy_target(const Parameters::AllParameters  &parameters,
+                         const Parameters::AccuracyTarget &target,
+                         MPI_Comm                          communicator);
+} // namespace rollnip
+
+#endif

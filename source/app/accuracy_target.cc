@@ -1,0 +1,409 @@
+#include <deal.II/base/timer.h>
+#include <deal.II/base/utilities.h>
+
+#include <rollnip/app/accuracy_target.h>
+#include <rollnip/app/nip_study.h>
+#include <rollnip/output/atomic_file.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace rollnip
+{
+  namespace Parameters
+  {
+    namespace
+    {
+      /// The names users may give in Accuracy/Target quantities.
+      NipQuantity::Index
+      quantity_by_name(const std::string &name)
+      {
+        static const std::vector<std::pair<std::string, NipQuantity::Index>>
+          names = {{"theta0", NipQuantity::theta0},
+                   {"P", NipQuantity::load},
+                   {"u0", NipQuantity::indentation},
+                   {"b", NipQuantity::half_chord},
+                   {"2b", NipQuantity::half_chord},
+                   {"peak pressure", NipQuantity::peak_pressure},
+                   {"mean pressure", NipQuantity::mean_pressure},
+                   {"bond sigma_rr", NipQuantity::bond_sigma_rr},
+                   {"bond sigma_rtheta", NipQuantity::bond_sigma_rtheta}};
+        for (const auto &entry : names)
+          if (entry.first == name)
+            return entry.second;
+        AssertThrow(false,
+                    ExcMessage("Accuracy/Target quantities: '" + name +
+                               "' is not one of theta0, P, u0, b, 2b, peak "
+                               "pressure, mean pressure, bond sigma_rr, bond "
+                               "sigma_rtheta"));
+        return NipQuantity::load;
+      }
+
+      /// "0.1 %", "0.1%" or "1e-3" as a fraction; "" or "off" as 0.
+      double
+      relative_error(const std::string &text)
+      {
+        std::string t = Utilities::trim(text);
+        if (t.empty() || t == "off")
+          return 0;
+        double scale = 1;
+        if (t.back() == '%')
+          {
+            scale = 0.01;
+            t     = Utilities::trim(t.substr(0, t.size() - 1));
+          }
+        std::size_t used  = 0;
+        double      value = std::numeric_limits<double>::quiet_NaN();
+        try
+          {
+            value = std::stod(t, &used);
+          }
+        catch (const std::exception &)
+          {
+            used = 0;
+          }
+        AssertThrow(used > 0 && used == t.size() && std::isfinite(value),
+                    ExcMessage("Accuracy/Target: '" + text +
+                               "' is not a number (give a relative error such "
+                               "as 0.1 % or 1e-3, or off)"));
+        value *= scale;
+        AssertThrow(value > 0 && value < 0.5,
+                    ExcMessage("Accuracy/Target: '" + text +
+                               "' must lie between 0 and 50 %"));
+        return value;
+      }
+    } // namespace
+
+    void
+    AccuracyTarget::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Accuracy");
+      prm.declare_entry(
+        "Target",
+        "off",
+        Patterns::Anything(),
+        "The relative error a contact run must reach, e.g. '0.1 %' or "
+        "'1e-3'; 'off' (default): the mesh and element of the file. With a "
+        "target the program chooses the element and the mesh level, cheapest "
+        "first, solves with the error estimate and refines until the "
+        "estimated error of every Target quantity of every nip is within it "
+        "(doc/accuracy.md)");
+      prm.declare_entry(
+        "Target quantities",
+        "P, 2b",
+        Patterns::Anything(),
+        "The numbers the target applies to: theta0, P, u0, b (or 2b), peak "
+        "pressure, mean pressure, bond sigma_rr, bond sigma_rtheta");
+      prm.leave_subsection();
+    }
+
+    void
+    AccuracyTarget::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Accuracy");
+      target = relative_error(prm.get("Target"));
+      quantities.clear();
+      for (const auto &name :
+           Utilities::split_string_list(prm.get("Target quantities")))
+        {
+          const auto q = quantity_by_name(Utilities::trim(name));
+          if (std::find(quantities.begin(), quantities.end(), q) ==
+              quantities.end())
+            quantities.push_back(q);
+        }
+      AssertThrow(!quantities.empty(),
+                  ExcMessage("Accuracy/Target quantities: name at least one "
+                             "quantity"));
+      prm.leave_subsection();
+    }
+
+    void
+    AccuracyTarget::read(const std::string &filename)
+    {
+      ParameterHandler prm;
+      AllParameters::declare(prm);
+      prm.parse_input(filename);
+      parse(prm);
+      if (target == 0)
+        return;
+      AllParameters p;
+      p.parse(prm);
+      AssertThrow(p.contact.mode != ContactMode::none,
+                  ExcMessage("Accuracy/Target needs a contact scene "
+                             "(Contact/Mode = nip angle, load or "
+                             "indentation)"));
+      AssertThrow(p.mesh.source == MeshSource::builtin,
+                  ExcMessage("Accuracy/Target chooses the level of the "
+                             "builtin mesh: it cannot refine a gmsh mesh "
+                             "(Mesh/Source)"));
+      AssertThrow(p.mesh.adaptive_passes == 0,
+                  ExcMessage("Accuracy/Target chooses the mesh level of the "
+                             "nip-fitted mesh: set Mesh/Adaptive grading "
+                             "passes = 0"));
+      AssertThrow(p.study.levels.empty(),
+                  ExcMessage("Accuracy/Target and a Study subsection ask for "
+                             "two different runs: remove one"));
+    }
+  } // namespace Parameters
+
+  namespace
+  {
+    /// The largest relative error of each quantity of the default scene's
+    /// nips (run 30, u0 = 0.5-3 mm) at level 0 on the nip-fitted mesh,
+    /// against Q2-P1 at level 3 (doc/accuracy.md, the speed-accuracy
+    /// front), rounded up; in the order of NipQuantity.
+    constexpr double level0_error[2][NipQuantity::n_quantities] = {
+      {6e-3, 4.5e-3, 2.5e-3, 6e-3, 5.5e-3, 1e-2, 2e-2, 5e-2}, // Q1-P0
+      {6e-3, 6e-4, 5e-4, 6e-3, 5e-3, 7e-3, 2e-2, 3e-2}};      // Q2-P1
+
+    /// DoFs of the default scene's roll at level 0 per element.
+    constexpr double level0_dofs[2] = {486, 1690};
+
+    /// A target is taken as predicted to be met below this fraction of
+    /// it: the model is calibrated on one scene.
+    constexpr double prediction_margin = 0.7;
+
+    unsigned int
+    element_index(const Parameters::Element e)
+    {
+      return e == Parameters::Element::q1_p0 ? 0 : 1;
+    }
+
+    std::string
+    element_name(const Parameters::Element e)
+    {
+      return e == Parameters::Element::q1_p0 ? "Q1-P0" : "Q2-P1";
+    }
+
+    /// The largest estimated relative error of @p q over @p rows; inf if
+    /// a nip has none.
+    double
+    largest_estimate(const std::vector<NipRow> &rows,
+                     const NipQuantity::Index   q)
+    {
+      double worst = 0;
+      for (const auto &row : rows)
+        {
+          const double e = row.error.relative(q, nip_numbers(row)[q]);
+          worst          = std::isfinite(e) ? std::max(worst, e)
+                                            : std::numeric_limits<double>::infinity();
+        }
+      return worst;
+    }
+
+    /// One candidate's run: what it was and what it reached.
+    struct Attempt
+    {
+      AccuracyCandidate       candidate;
+      int                     code    = 0;
+      double                  seconds = 0;
+      unsigned int            n_nips  = 0;
+      types::global_dof_index n_dofs  = 0;
+      std::vector<double>     estimate; ///< per target quantity
+      bool                    met = false;
+    };
+
+    /// Solves the sweep of @p parameters with @p candidate's element and
+    /// level and the error estimate on.
+    Attempt
+    attempt(const Parameters::AllParameters  &parameters,
+            const Parameters::AccuracyTarget &target,
+            const AccuracyCandidate          &candidate,
+            MPI_Comm                          communicator)
+    {
+      Parameters::AllParameters p = parameters;
+      p.discretization.element    = candidate.element;
+      p.mesh.global_refinements   = candidate.level;
+      p.accuracy.error_estimate   = true;
+      Attempt             a;
+      std::vector<NipRow> rows;
+      a.candidate = candidate;
+      Timer timer;
+      a.code    = run_nip_study(p, communicator, &rows);
+      a.seconds = timer.wall_time();
+      a.n_nips  = rows.size();
+      a.n_dofs  = rows.empty() ? 0 : rows.front().n_dofs;
+      a.met     = a.code == 0 && !rows.empty();
+      for (const auto q : target.quantities)
+        {
+          a.estimate.push_back(largest_estimate(rows, q));
+          a.met = a.met && a.estimate.back() <= target.target;
+        }
+      return a;
+    }
+
+    /// The next candidate: the cheapest untried one, dearer than the
+    /// last, whose predicted errors (scaled by @p calibration per
+    /// quantity) are all within the margin of the target; if none is
+    /// predicted to meet it, the one predicted to come closest; -1 when
+    /// none is left.
+    int
+    next_candidate(const std::vector<AccuracyCandidate> &candidates,
+                   const std::vector<bool>              &tried,
+                   const double                          last_cost,
+                   const Parameters::AllParameters      &parameters,
+                   const Parameters::AccuracyTarget     &target,
+                   const std::vector<double>            &calibration)
+    {
+      int    closest = -1;
+      double best    = std::numeric_limits<double>::infinity();
+      for (unsigned int c = 0; c < candidates.size(); ++c)
+        {
+          if (tried[c] || candidates[c].cost <= last_cost)
+            continue;
+          // The largest predicted error over the target quantities, in
+          // units of the target.
+          double worst = 0;
+          for (unsigned int k = 0; k < target.quantities.size(); ++k)
+            worst = std::max(worst,
+                             calibration[k] *
+                               predicted_error(candidates[c],
+                                               target.quantities[k],
+                                               parameters.contact.mode) /
+                               target.target);
+          if (worst <= prediction_margin)
+            return c;
+          if (worst < best)
+            {
+              best    = worst;
+              closest = c;
+            }
+        }
+      return closest;
+    }
+
+    /// accuracy_target.csv: every candidate tried.
+    void
+    write_attempts(const std::vector<Attempt>       &attempts,
+                   const Parameters::AccuracyTarget &target,
+                   const std::string                &dir)
+    {
+      write_atomically(dir + "/accuracy_target.csv", [&](std::ostream &out) {
+        out << "element,level,dofs,nips,wall_time_s,target_relative";
+        for (const auto q : target.quantities)
+          out << ",estimated_relative_error_" << NipQuantity::key(q);
+        out << ",met\n" << std::setprecision(6);
+        for (const auto &a : attempts)
+          {
+            out << element_name(a.candidate.element) << ',' << a.candidate.level
+                << ',' << a.n_dofs << ',' << a.n_nips << ',' << a.seconds << ','
+                << target.target;
+            for (const double e : a.estimate)
+              out << ',' << e;
+            out << ',' << (a.met ? "yes" : "no") << '\n';
+          }
+      });
+    }
+
+    /// The screen line of attempt @p a.
+    std::string
+    describe(const Attempt &a, const Parameters::AccuracyTarget &target)
+    {
+      std::ostringstream out;
+      out << element_name(a.candidate.element) << " level " << a.candidate.level
+          << " (" << a.n_dofs << " DoFs, " << std::fixed << std::setprecision(2)
+          << a.seconds << " s for " << a.n_nips
+          << " nip(s)): largest estimated";
+      for (unsigned int k = 0; k < target.quantities.size(); ++k)
+        out << (k ? ", " : " ") << NipQuantity::label(target.quantities[k])
+            << ' ' << std::setprecision(3) << 100 * a.estimate[k] << " %";
+      return out.str();
+    }
+  } // namespace
+
+  std::vector<AccuracyCandidate>
+  accuracy_candidates()
+  {
+    std::vector<AccuracyCandidate> c;
+    for (unsigned int level = 0; level <= 4; ++level)
+      c.push_back({Parameters::Element::q1_p0,
+                   level,
+                   level0_dofs[0] * std::pow(4., level)});
+    for (unsigned int level = 0; level <= 3; ++level)
+      c.push_back({Parameters::Element::q2_p1,
+                   level,
+                   level0_dofs[1] * std::pow(4., level)});
+    std::sort(c.begin(), c.end(), [](const auto &a, const auto &b) {
+      return a.cost < b.cost;
+    });
+    return c;
+  }
+
+  double
+  predicted_error(const AccuracyCandidate      &candidate,
+                  const NipQuantity::Index      q,
+                  const Parameters::ContactMode mode)
+  {
+    const double p = error_order(candidate.element, q, mode);
+    return level0_error[element_index(candidate.element)][q] *
+           std::pow(2., -p * candidate.level);
+  }
+
+  int
+  run_to_accuracy_target(const Parameters::AllParameters  &parameters,
+                         const Parameters::AccuracyTarget &target,
+                         MPI_Comm                          communicator)
+  {
+    const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
+    ConditionalOStream   pcout(std::cout, root);
+    const auto           candidates = accuracy_candidates();
+    std::vector<bool>    tried(candidates.size(), false);
+    std::vector<double>  calibration(target.quantities.size(), 1.);
+    std::vector<Attempt> attempts;
+    Timer                timer;
+    int                  c =
+      next_candidate(candidates, tried, -1, parameters, target, calibration);
+    while (c >= 0)
+      {
+        tried[c] = true;
+        pcout << "Accuracy target " << 100 * target.target << " %: trying "
+              << element_name(candidates[c].element) << " at mesh level "
+              << candidates[c].level << std::endl;
+        attempts.push_back(
+          attempt(parameters, target, candidates[c], communicator));
+        const Attempt &a = attempts.back();
+        write_attempts(attempts, target, parameters.output.directory);
+        pcout << "Accuracy target: " << describe(a, target) << " -> "
+              << (a.met ? "met" : "not met") << std::endl;
+        if (a.met || a.code != 0)
+          break;
+        // The scene's own error level against the default scene's.
+        for (unsigned int k = 0; k < target.quantities.size(); ++k)
+          calibration[k] =
+            a.estimate[k] / predicted_error(candidates[c],
+                                            target.quantities[k],
+                                            parameters.contact.mode);
+        c = next_candidate(candidates,
+                           tried,
+                           candidates[c].cost,
+                           parameters,
+                           target,
+                           calibration);
+      }
+    const Attempt &last = attempts.back();
+    if (last.code != 0)
+      return last.code; // the sweep said why
+    if (root)
+      {
+        if (last.met)
+          std::cout << "Accuracy target " << 100 * target.target
+                    << " % met with " << element_name(last.candidate.element)
+                    << " at mesh level " << last.candidate.level << " after "
+                    << attempts.size() << " run(s), " << std::fixed
+                    << std::setprecision(2) << timer.wall_time()
+                    << " s in all; the results files are that run's"
+                    << std::defaultfloat << std::endl;
+        else
+          std::cerr << "rollnip: error: Accuracy/Target " << 100 * target.target
+                    << " % is not met by any element and level up to "
+                    << element_name(last.candidate.element) << " level "
+                    << last.candidate.level << " (" << describe(last, target)
+                    << "); the files in '" << parameters.output.directory
+                    << "' hold that run" << std::endl;
+      }
+    return last.met ? 0 : 1;
+  }
+} // namespace rollnip
