@@ -155,8 +155,9 @@ namespace
               e.push_back(
                 relative_error(run[line], reference, runs[0][line], c));
             const std::string name = names[2 * line + c];
-            std::cout << "  " << name << ": largest relative error " << e[0]
-                      << ", " << e[1] << ", " << e[2] << std::endl;
+            std::cout << std::scientific << std::setprecision(2) << "  " << name
+                      << ": largest relative error " << e[0] << ", " << e[1]
+                      << ", " << e[2] << std::endl;
             for (unsigned int l = 1; l < e.size(); ++l)
               {
                 const double p = testing::order(e[l - 1], e[l]);
