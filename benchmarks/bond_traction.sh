@@ -52,7 +52,9 @@ end
 EOF
   "$rollnip" "$tmp/$1.prm" >"$tmp/$1.log" 2>&1 ||
     { echo "bond_traction.sh: $1 failed, see its log:" >&2; tail "$tmp/$1.log" >&2; exit 1; }
+  # One nip: its summary.txt is in the output directory itself.
   local s=$dir/nip-01/summary.txt
+  [ -f "$s" ] || s=$dir/summary.txt
   local keys="bond_sigma_rr_min_MPa bond_sigma_rtheta_max_abs_MPa interface_1_sigma_nn_min_MPa interface_1_sigma_nt_max_abs_MPa"
   for k in $keys; do
     grep -m1 "^$k = " "$s" | sed 's/.* = //' || echo nan
