@@ -8,8 +8,9 @@
 # |sigma_rtheta| max, the interface's sigma_nn min and |sigma_nt| max
 # [MPa], and the relative error of each against the reference.
 #
-# Usage: bash benchmarks/bond_traction.sh [REFERENCE_LEVEL]
-# Uses build/rollnip or $ROLLNIP_BIN; about 5 minutes on one core.
+# Usage: [COVERS="single layered"] bash benchmarks/bond_traction.sh
+#            [REFERENCE_LEVEL]
+# Uses build/rollnip or $ROLLNIP_BIN; about 10 minutes on one core.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 rollnip=${ROLLNIP_BIN:-$root/build/rollnip}
@@ -64,8 +65,9 @@ EOF
 
 table() {
   local name=$1 material=$2
-  local ref
-  ref=$(run "$name-ref" Q2-P1 "$reference_level" "$material" | head -1)
+  local out ref
+  out=$(run "$name-ref" Q2-P1 "$reference_level" "$material")
+  ref=$(echo "$out" | head -1)
   echo
   echo "$name cover; reference Q2-P1 level $reference_level: $ref"
   echo
@@ -90,6 +92,10 @@ EOF
   done
 }
 
-table single "  set Hardness = 70"
-table layered "  set Hardness = 60, 90
-  set Layer thicknesses = 15, 5"
+for cover in ${COVERS:-single layered}; do
+  case $cover in
+    single) table single "  set Hardness = 70" ;;
+    layered) table layered "  set Hardness = 60, 90
+  set Layer thicknesses = 15, 5" ;;
+  esac
+done
