@@ -31,17 +31,13 @@ namespace rollnip
     {
       std::function<bool(const CellIterator &)>                     in_region;
       std::function<bool(const CellIterator &, const unsigned int)> on_line;
-      /// +1 if the region's outward normal points away from the axis (an
-      /// interface seen from the inner layer), -1 if towards it (the bond).
-      double side;
     };
 
     /// This rank's sums at one node of the line.
     struct NodeSums
     {
       double         theta_sum = 0, count = 0;
-      Tensor<1, dim> force;  ///< sum of the region's int P : Grad phi_a
-      Tensor<1, dim> normal; ///< sum of the faces' deformed outward normals
+      Tensor<1, dim> force; ///< sum of the region's int P : Grad phi_a
       double         vertex = 0;
     };
 
@@ -91,17 +87,20 @@ namespace rollnip
       return keys;
     }
 
-    using MassSums = std::map<std::pair<NodeKey, NodeKey>, double>;
+    /// Per face of the line: its nodes' keys, then per Gauss point the
+    /// nodes' shape values and n da (the deformed outward normal times the
+    /// deformed length element), flattened for the gather.
+    using FaceRecords = std::vector<double>;
 
     /**
-     * Angle, deformed normal and the mass matrix int phi_a phi_b da of the
-     * deformed line (da = |cof F N| dA), from the owned region cells' faces.
+     * The angle of every node and the line's face records (FaceRecords),
+     * from the owned region cells' faces; da = |cof F N| dA.
      */
     void
     add_line_geometry(const RollBody              &body,
                       const LineChoice            &line,
                       std::map<NodeKey, NodeSums> &nodes,
-                      MassSums                    &mass)
+                      FaceRecords                 &faces)
     {
       const auto                      &fe = body.fe();
       const FEValuesExtractors::Vector displacement(0);
@@ -110,15 +109,13 @@ namespace rollnip
         body.mapping(),
         fe,
         Quadrature<dim - 1>(FE_Q<dim - 1>(degree).get_unit_support_points()),
-        update_values | update_gradients | update_normal_vectors |
-          update_quadrature_points);
-      FEFaceValues<dim>           gauss(body.mapping(),
+        update_values | update_quadrature_points);
+      FEFaceValues<dim>                    gauss(body.mapping(),
                               fe,
                               QGauss<dim - 1>(degree + 1),
                               update_values | update_gradients |
                                 update_normal_vectors | update_JxW_values);
-      std::vector<Tensor<2, dim>> grad_u(
-        std::max(at_nodes.n_quadrature_points, gauss.n_quadrature_points));
+      std::vector<Tensor<2, dim>>          grad_u(gauss.n_quadrature_points);
       std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
       const Tensor<2, dim>                 I = unit_symmetric_tensor<dim>();
       for (const auto &cell : body.dofs().active_cell_iterators())
@@ -130,8 +127,6 @@ namespace rollnip
               cell->get_dof_indices(dofs);
               const auto nodes_of_face = face_nodes(fe, f);
               at_nodes.reinit(cell, f);
-              at_nodes[displacement].get_function_gradients(body.solution(),
-                                                            grad_u);
               for (const unsigned int ci : nodes_of_face)
                 for (unsigned int q = 0; q < at_nodes.n_quadrature_points; ++q)
                   if (at_nodes.shape_value(ci, q) > 0.5)
@@ -140,26 +135,25 @@ namespace rollnip
                       s.theta_sum +=
                         reference_angle(at_nodes.quadrature_point(q));
                       s.count += 1;
-                      const Tensor<1, dim> n =
-                        cofactor(I + grad_u[q]) * at_nodes.normal_vector(q);
-                      s.normal += n / n.norm();
                       s.vertex = fe.system_to_component_index(ci).second <
                                      cell->n_vertices()
                                    ? 1.
                                    : 0.;
                     }
+              for (const unsigned int a : nodes_of_face)
+                faces.push_back(static_cast<double>(dofs[a]));
               gauss.reinit(cell, f);
               gauss[displacement].get_function_gradients(body.solution(),
                                                          grad_u);
               for (unsigned int q = 0; q < gauss.n_quadrature_points; ++q)
                 {
-                  const double da =
-                    (cofactor(I + grad_u[q]) * gauss.normal_vector(q)).norm() *
-                    gauss.JxW(q);
                   for (const unsigned int a : nodes_of_face)
-                    for (const unsigned int b : nodes_of_face)
-                      mass[{dofs[a], dofs[b]}] +=
-                        gauss.shape_value(a, q) * gauss.shape_value(b, q) * da;
+                    faces.push_back(gauss.shape_value(a, q));
+                  const Tensor<1, dim> n_da = cofactor(I + grad_u[q]) *
+                                              gauss.normal_vector(q) *
+                                              gauss.JxW(q);
+                  faces.push_back(n_da[0]);
+                  faces.push_back(n_da[1]);
                 }
             }
     }
@@ -218,14 +212,14 @@ namespace rollnip
         }
     }
 
-    /// Everything of all ranks on rank 0: the node sums and the mass
-    /// matrix entries (empty on the other ranks).
+    /// Everything of all ranks on rank 0: the node sums and the face
+    /// records (empty on the other ranks).
     void
     gather_on_root(std::map<NodeKey, NodeSums> &nodes,
-                   MassSums                    &mass,
+                   FaceRecords                 &faces,
                    const MPI_Comm               comm)
     {
-      std::vector<double> flat_nodes, flat_mass;
+      std::vector<double> flat_nodes;
       for (const auto &[key, s] : nodes)
         flat_nodes.insert(flat_nodes.end(),
                           {static_cast<double>(key),
@@ -233,36 +227,26 @@ namespace rollnip
                            s.count,
                            s.force[0],
                            s.force[1],
-                           s.normal[0],
-                           s.normal[1],
                            s.vertex});
-      for (const auto &[keys, m] : mass)
-        flat_mass.insert(flat_mass.end(),
-                         {static_cast<double>(keys.first),
-                          static_cast<double>(keys.second),
-                          m});
       const auto all_nodes = Utilities::MPI::gather(comm, flat_nodes, 0);
-      const auto all_mass  = Utilities::MPI::gather(comm, flat_mass, 0);
+      const auto all_faces = Utilities::MPI::gather(comm, faces, 0);
       nodes.clear();
-      mass.clear();
+      faces.clear();
       for (const auto &part : all_nodes)
-        for (std::size_t i = 0; i < part.size(); i += 8)
+        for (std::size_t i = 0; i < part.size(); i += 6)
           {
             NodeSums &s = nodes[static_cast<NodeKey>(part[i])];
             s.theta_sum += part[i + 1];
             s.count += part[i + 2];
             s.force += Tensor<1, dim>({part[i + 3], part[i + 4]});
-            s.normal += Tensor<1, dim>({part[i + 5], part[i + 6]});
-            s.vertex = std::max(s.vertex, part[i + 7]);
+            s.vertex = std::max(s.vertex, part[i + 5]);
           }
-      for (const auto &part : all_mass)
-        for (std::size_t i = 0; i < part.size(); i += 3)
-          mass[{static_cast<NodeKey>(part[i]),
-                static_cast<NodeKey>(part[i + 1])}] += part[i + 2];
+      for (const auto &part : all_faces)
+        faces.insert(faces.end(), part.begin(), part.end());
     }
 
-    /// A symmetric positive definite band matrix, A(i, j) = band[i][j - i + w]
-    /// for |i - j| <= w.
+    /// A band matrix, A(i, j) = band[i][j - i + w] for |i - j| <= w,
+    /// diagonally dominant (a mass matrix), so no pivoting is needed.
     struct BandMatrix
     {
       BandMatrix(const unsigned int n, const unsigned int w)
@@ -287,8 +271,8 @@ namespace rollnip
         (*this)(i, i) = 1.;
       }
 
-      /// Solves A x = b in place by elimination without pivoting (A is
-      /// positive definite); A is copied, so it can be reused.
+      /// Solves A x = b by elimination without pivoting; A is copied, so
+      /// it can be reused.
       std::vector<double>
       solve(std::vector<double> b) const
       {
@@ -365,15 +349,81 @@ namespace rollnip
     }
 
     /**
-     * Rank 0: solves M t = f for the traction's polar components (at each
-     * node's reference angle, so that a symmetry edge's zero shear is one
-     * row) and reads sigma n at the vertices in the deformed line's frame.
+     * Rank 0: the nodal normals n_a (int phi_a n da over the line,
+     * normalised; on a symmetry edge the mirror image's is added, which
+     * leaves the radial direction) and the matrix
+     * M_ab = int phi_a phi_b (n . n_a) da, rows and columns in @p index.
+     * Projected on n_a and its tangent s_a, f_a = int t phi_a da becomes
+     * M tau_n = f . n_a and M tau_s = f . s_a for t = tau_n n + tau_s s:
+     * exact for a hydrostatic state (tau_n = -p) on a polygonal line too.
+     */
+    BandMatrix
+    line_matrix(const RollBody                        &body,
+                const FaceRecords                     &faces,
+                const std::map<NodeKey, unsigned int> &index,
+                const std::vector<double>             &theta,
+                std::vector<Tensor<1, dim>>           &normal)
+    {
+      const unsigned int nf     = body.fe().base_element(0).degree + 1;
+      const unsigned int record = nf + nf * (nf + 2);
+      normal.assign(theta.size(), Tensor<1, dim>());
+      unsigned int w = 0;
+      for (std::size_t r = 0; r < faces.size(); r += record)
+        for (unsigned int a = 0; a < nf; ++a)
+          {
+            const unsigned int i = index.at(static_cast<NodeKey>(faces[r + a]));
+            for (unsigned int b = 0; b < nf; ++b)
+              {
+                const unsigned int j =
+                  index.at(static_cast<NodeKey>(faces[r + b]));
+                w = std::max(w, i > j ? i - j : j - i);
+              }
+            for (unsigned int q = 0; q < nf; ++q)
+              {
+                const double *p = &faces[r + nf + q * (nf + 2)];
+                normal[i] += p[a] * Tensor<1, dim>({p[nf], p[nf + 1]});
+              }
+          }
+      for (unsigned int i = 0; i < theta.size(); ++i)
+        {
+          if (on_symmetry_edge(body.scene(), theta[i]))
+            {
+              const Tensor<1, dim> e_r(
+                {std::cos(theta[i]), std::sin(theta[i])});
+              normal[i] = (normal[i] * e_r) * e_r;
+            }
+          normal[i] /= normal[i].norm();
+        }
+      BandMatrix M(theta.size(), w);
+      for (std::size_t r = 0; r < faces.size(); r += record)
+        for (unsigned int q = 0; q < nf; ++q)
+          {
+            const double        *p = &faces[r + nf + q * (nf + 2)];
+            const Tensor<1, dim> n_da({p[nf], p[nf + 1]});
+            for (unsigned int a = 0; a < nf; ++a)
+              {
+                const unsigned int i =
+                  index.at(static_cast<NodeKey>(faces[r + a]));
+                for (unsigned int b = 0; b < nf; ++b)
+                  M(i, index.at(static_cast<NodeKey>(faces[r + b]))) +=
+                    p[a] * p[b] * (n_da * normal[i]);
+              }
+          }
+      return M;
+    }
+
+    /**
+     * Rank 0: solves for the normal and shear traction of the nodes (zero
+     * shear on a symmetry edge), filters them and returns the vertices'.
+     * n_a points out of the region: away from the axis on an interface
+     * seen from inside, towards it on the bond; sigma_nn and sigma_nt (n
+     * away from the axis, s its counter-clockwise tangent) are tau_n and
+     * tau_s either way.
      */
     std::vector<LineTraction>
     solve_on_root(const RollBody                    &body,
                   const std::map<NodeKey, NodeSums> &nodes,
-                  const MassSums                    &mass,
-                  const double                       side)
+                  const FaceRecords                 &faces)
     {
       std::vector<std::pair<double, NodeKey>> order;
       for (const auto &[key, s] : nodes)
@@ -382,61 +432,33 @@ namespace rollnip
       std::sort(order.begin(), order.end());
       const unsigned int              n = order.size();
       std::map<NodeKey, unsigned int> index;
-      for (unsigned int i = 0; i < n; ++i)
-        index[order[i].second] = i;
-      unsigned int w = 0;
-      for (const auto &[keys, m] : mass)
-        w = std::max(w,
-                     static_cast<unsigned int>(
-                       std::abs(static_cast<int>(index.at(keys.first)) -
-                                static_cast<int>(index.at(keys.second)))));
-      BandMatrix M(n, w);
-      for (const auto &[keys, m] : mass)
-        M(index.at(keys.first), index.at(keys.second)) += m;
-      std::vector<double> f_r(n), f_t(n);
+      std::vector<double>             theta(n);
       for (unsigned int i = 0; i < n; ++i)
         {
-          const double          theta = order[i].first;
-          const Tensor<1, dim> &f     = nodes.at(order[i].second).force;
-          f_r[i] = std::cos(theta) * f[0] + std::sin(theta) * f[1];
-          f_t[i] = -std::sin(theta) * f[0] + std::cos(theta) * f[1];
+          index[order[i].second] = i;
+          theta[i]               = order[i].first;
         }
-      auto t_r = M.solve(f_r);
+      std::vector<Tensor<1, dim>> normal;
+      BandMatrix          M = line_matrix(body, faces, index, theta, normal);
+      std::vector<double> f_n(n), f_s(n);
       for (unsigned int i = 0; i < n; ++i)
-        if (on_symmetry_edge(body.scene(), order[i].first))
+        {
+          const Tensor<1, dim> &f = nodes.at(order[i].second).force;
+          f_n[i]                  = f * normal[i];
+          f_s[i] = f * Tensor<1, dim>({-normal[i][1], normal[i][0]});
+        }
+      const auto tau_n = smooth(M.solve(f_n), theta, false, body.scene());
+      for (unsigned int i = 0; i < n; ++i)
+        if (on_symmetry_edge(body.scene(), theta[i]))
           {
             M.make_identity_row(i);
-            f_t[i] = 0;
+            f_s[i] = 0;
           }
-      auto                t_t = M.solve(f_t);
-      std::vector<double> theta(n);
-      for (unsigned int i = 0; i < n; ++i)
-        theta[i] = order[i].first;
-      t_r = smooth(t_r, theta, false, body.scene());
-      t_t = smooth(t_t, theta, true, body.scene());
-
+      const auto tau_s = smooth(M.solve(f_s), theta, true, body.scene());
       std::vector<LineTraction> result;
       for (unsigned int i = 0; i < n; ++i)
-        {
-          const NodeSums &s = nodes.at(order[i].second);
-          if (s.vertex == 0)
-            continue;
-          const double   c     = std::cos(order[i].first);
-          const double   sn    = std::sin(order[i].first);
-          Tensor<1, dim> n_out = s.normal;
-          // On a symmetry edge only one side's faces are meshed: the
-          // mirror image's normal is added, which leaves the edge's own
-          // direction e_r (the edges are radial).
-          if (on_symmetry_edge(body.scene(), order[i].first))
-            n_out = (n_out * Tensor<1, dim>({c, sn})) * Tensor<1, dim>({c, sn});
-          // sigma n with n pointing away from the axis.
-          const Tensor<1, dim> t =
-            side * Tensor<1, dim>(
-                     {c * t_r[i] - sn * t_t[i], sn * t_r[i] + c * t_t[i]});
-          const Tensor<1, dim> normal = side * n_out / n_out.norm();
-          const Tensor<1, dim> tangent({-normal[1], normal[0]});
-          result.push_back({order[i].first, normal * t, tangent * t});
-        }
+        if (nodes.at(order[i].second).vertex != 0)
+          result.push_back({theta[i], tau_n[i], tau_s[i]});
       return result;
     }
 
@@ -444,14 +466,14 @@ namespace rollnip
     recover(const RollBody &body, const LineChoice &line)
     {
       std::map<NodeKey, NodeSums> nodes;
-      MassSums                    mass;
-      add_line_geometry(body, line, nodes, mass);
+      FaceRecords                 faces;
+      add_line_geometry(body, line, nodes, faces);
       add_nodal_forces(body, line, line_keys(body, line), nodes);
-      gather_on_root(nodes, mass, body.communicator());
+      gather_on_root(nodes, faces, body.communicator());
       if (Utilities::MPI::this_mpi_process(body.communicator()) != 0 ||
           nodes.empty())
         return {};
-      return solve_on_root(body, nodes, mass, line.side);
+      return solve_on_root(body, nodes, faces);
     }
   } // namespace
 
@@ -464,7 +486,6 @@ namespace rollnip
       return cell->face(f)->at_boundary() &&
              cell->face(f)->boundary_id() == BoundaryIds::inner_arc;
     };
-    line.side = -1;
     return recover(body, line);
   }
 
@@ -483,7 +504,6 @@ namespace rollnip
       return !cell->face(f)->at_boundary() &&
              cell->neighbor(f)->material_id() == other;
     };
-    line.side = from_outer_layer ? -1 : 1;
     return recover(body, line);
   }
 } // namespace rollnip

@@ -6,8 +6,8 @@
 // The reference is the other element family: Q2-P1 on levels 2 and 3,
 // extrapolated at order 2, node by node at the level-1 vertices up to
 // 45 deg. Q1-P0 on levels 1, 2, 3 must converge to it at the observed
-// order >= 1.5 in the largest error over those nodes (relative to the
-// largest value), for
+// order >= 1.5 from level 1 to 3 (and >= 1.4 per level) in the largest
+// error over those nodes (relative to the largest value), for
 // 1. one layer (C1 = C2 = 0.25 MPa): the bond's sigma_rr and sigma_rtheta;
 // 2. two layers (3 mm of C1 + C2 = 2.5 MPa on the core, 10.5 mm of
 //    0.3 MPa outside): the same, and the interface's sigma_nn and
@@ -158,14 +158,19 @@ namespace
             std::cout << std::scientific << std::setprecision(2) << "  " << name
                       << ": largest relative error " << e[0] << ", " << e[1]
                       << ", " << e[2] << std::endl;
+            // Observed: 1.53 to 2.06 per level, 1.77 to 2.00 over both.
             for (unsigned int l = 1; l < e.size(); ++l)
               {
                 const double p = testing::order(e[l - 1], e[l]);
-                checker.check(p >= 1.5,
+                checker.check(p >= 1.4,
                               name + ": observed order " + testing::num(p) +
-                                " >= 1.5 (levels " + std::to_string(l) +
+                                " >= 1.4 (levels " + std::to_string(l) +
                                 " -> " + std::to_string(l + 1) + ")");
               }
+            const double p = 0.5 * std::log2(e[0] / e[2]);
+            checker.check(p >= 1.5,
+                          name + ": observed order " + testing::num(p) +
+                            " >= 1.5 from level 1 to 3");
           }
       }
   }

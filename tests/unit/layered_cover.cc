@@ -157,7 +157,7 @@ namespace
                       "observed order " + testing::num(order) +
                         " of the radius changes in [1.7, 2.5]");
         // The traction recovered from the nodal forces (line_traction.h)
-        // converges at second order: observed 1.999 and 2.000 (the cells'
+        // converges at second order: observed 1.998 to 2.002 (the cells'
         // stresses read at the nodes converged at 0.73 to 0.93).
         const double stress_order =
           testing::order(interface_errors[l - 1], interface_errors[l]);
@@ -168,10 +168,11 @@ namespace
     checker.check(errors.back() < 2e-3,
                   "finest relative error " + testing::num(errors.back()) +
                     " < 2e-3");
-    checker.check(interface_errors.back() < 5e-4,
+    // Observed 1.1e-5 q (inflated) and 2.1e-7 q (compressed).
+    checker.check(interface_errors.back() < 1e-4,
                   "interface traction within " +
                     testing::num(interface_errors.back()) +
-                    " q < 5e-4 q of exact at every node on level 3");
+                    " q < 1e-4 q of exact at every node on level 3");
   }
 
   struct Answer
