@@ -52,8 +52,8 @@ gnuplot -e "set datafile separator ','; set terminal pngcairo enhanced font 'San
 gnuplot -e "set datafile separator ','; set terminal pngcairo enhanced font 'Sans,11' size 900,560; \
   set output '${prefix}_interface.png'; set key bottom right; set grid; \
   set xlabel 'reference angle {/Symbol Q} [deg]'; set ylabel 'stress [MPa]'; set xrange [0:40]; \
-  plot '$layered/$last/interface_1.csv' using 1:2 with lines lw 2 lc 1 title 'interface {/Symbol s}_{rr}', \
-       '' using 1:3 with lines lw 2 lc 2 title 'interface {/Symbol s}_{r{/Symbol q}}', \
+  plot '$layered/$last/interface_1.csv' using 1:2 with lines lw 2 lc 1 title 'interface {/Symbol s}_{nn}', \
+       '' using 1:3 with lines lw 2 lc 2 title 'interface {/Symbol s}_{nt}', \
        '$layered/$last/bond_surface.csv' using 1:2 with lines lw 2 dt 2 lc 1 title 'bond {/Symbol s}_{rr}', \
        '' using 1:3 with lines lw 2 dt 2 lc 2 title 'bond {/Symbol s}_{r{/Symbol q}}', \
        '$single/$last/bond_surface.csv' using 1:2 with lines lw 1 dt 3 lc 1 title 'bond {/Symbol s}_{rr}, one layer', \

@@ -91,14 +91,15 @@ namespace rollnip
           << "max_abs_J_minus_1_gauss = " << e.max_abs_J_minus_1 << '\n';
       for (unsigned int j = 0; j < data.interfaces.size(); ++j)
         {
+          // The traction in the deformed interface's frame (InterfacePoint).
           std::vector<BondSurfacePoint> as_bond;
           for (const auto &p : data.interfaces[j])
-            as_bond.push_back({p.theta, p.sigma_rr, p.sigma_rtheta, 0., 0.});
+            as_bond.push_back({p.theta, p.sigma_nn, p.sigma_nt, 0., 0.});
           const BondExtremes x   = bond_extremes(as_bond);
           const std::string  key = "interface_" + std::to_string(j + 1);
-          out << key << "_sigma_rr_min_MPa = " << x.sigma_rr_min << '\n'
-              << key << "_sigma_rr_max_MPa = " << x.sigma_rr_max << '\n'
-              << key << "_sigma_rtheta_max_abs_MPa = " << x.sigma_rtheta_max_abs
+          out << key << "_sigma_nn_min_MPa = " << x.sigma_rr_min << '\n'
+              << key << "_sigma_nn_max_MPa = " << x.sigma_rr_max << '\n'
+              << key << "_sigma_nt_max_abs_MPa = " << x.sigma_rtheta_max_abs
               << '\n';
         }
     }

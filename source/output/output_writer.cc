@@ -267,15 +267,14 @@ namespace rollnip
       write_atomically(directory + "/interface_" + std::to_string(j + 1) +
                          suffix + ".csv",
                        [&](std::ostream &out) {
-                         out << "theta_deg,sigma_rr_MPa,sigma_rtheta_MPa,"
+                         out << "theta_deg,sigma_nn_MPa,sigma_nt_MPa,"
                                 "sigma_thetatheta_inner_MPa,"
                                 "sigma_thetatheta_outer_MPa\n"
                              << std::setprecision(10);
                          for (const auto &p : data.interfaces[j])
-                           out << p.theta * deg << ',' << p.sigma_rr << ','
-                               << p.sigma_rtheta << ','
-                               << p.sigma_thetatheta_inner << ','
-                               << p.sigma_thetatheta_outer << '\n';
+                           out << p.theta * deg << ',' << p.sigma_nn << ','
+                               << p.sigma_nt << ',' << p.sigma_thetatheta_inner
+                               << ',' << p.sigma_thetatheta_outer << '\n';
                        });
   }
 

@@ -6,6 +6,7 @@
 #include <rollnip/boundary_ids.h>
 #include <rollnip/geometry/angles.h>
 #include <rollnip/postprocess/body_values.h>
+#include <rollnip/postprocess/line_traction.h>
 #include <rollnip/postprocess/stress_state.h>
 
 #include <cmath>
@@ -22,6 +23,13 @@ namespace rollnip
     angle_key(const double theta)
     {
       return std::llround(theta * 1e9);
+    }
+
+    /// Whether two reference angles name the same node.
+    bool
+    same_angle(const double a, const double b)
+    {
+      return std::abs(a - b) < 1e-8;
     }
 
     /// Per-node sums, so that values seen from several faces average.
@@ -135,9 +143,9 @@ namespace rollnip
               t * traction};
     }
 
-    /// The interface nodes of a layered cover, gathered on rank 0: each
-    /// side's stresses come from its own cells and are averaged per node
-    /// and side.
+    /// The interface nodes of a layered cover, gathered on rank 0: the
+    /// traction from the nodal forces, and each side's hoop stress from its
+    /// own cells, averaged per node and side.
     std::vector<std::vector<InterfacePoint>>
     interface_data(const RollBody &body)
     {
@@ -168,24 +176,31 @@ namespace rollnip
                                           values.q[v],
                                           X,
                                           values.u[v]);
-                  accumulate(
-                    sums,
-                    reference_angle(X),
-                    {reference_angle(X), s.sigma_rr, s.sigma_rt, s.sigma_tt});
+                  accumulate(sums,
+                             reference_angle(X),
+                             {reference_angle(X), s.sigma_tt});
                 }
             }
       std::vector<std::vector<InterfacePoint>> interfaces(n_interfaces);
       const MPI_Comm                           comm = body.communicator();
       for (unsigned int j = 0; j < n_interfaces; ++j)
         {
-          const auto in  = gather_rows(inner[j], 4, comm);
-          const auto out = gather_rows(outer[j], 4, comm);
-          for (unsigned int k = 0; k < std::min(in.size(), out.size()); ++k)
-            interfaces[j].push_back({in[k][0],
-                                     0.5 * (in[k][1] + out[k][1]),
-                                     0.5 * (in[k][2] + out[k][2]),
-                                     in[k][3],
-                                     out[k][3]});
+          const auto in  = gather_rows(inner[j], 2, comm);
+          const auto out = gather_rows(outer[j], 2, comm);
+          const auto t   = interface_traction(body, j);
+          AssertThrow(in.size() == t.size() && out.size() == t.size(),
+                      ExcInternalError());
+          for (unsigned int k = 0; k < t.size(); ++k)
+            {
+              AssertThrow(same_angle(in[k][0], t[k].theta) &&
+                            same_angle(out[k][0], t[k].theta),
+                          ExcInternalError());
+              interfaces[j].push_back({t[k].theta,
+                                       t[k].sigma_nn,
+                                       t[k].sigma_nt,
+                                       in[k][1],
+                                       out[k][1]});
+            }
         }
       return interfaces;
     }
@@ -252,7 +267,9 @@ namespace rollnip
    * Stresses come from the cells' own fields evaluated at the face
    * vertices and are averaged over the (two) faces meeting at a node: with
    * Q1-P0 they are discontinuous, and the average is what a user reads off
-   * a plot.
+   * a plot. The tractions on the bond and the interfaces come from the
+   * consistent nodal forces instead (line_traction.h), which converge
+   * faster than the cells' stresses at a node.
    */
   SurfaceData
   surface_data(const RollBody &body, const double load_fraction)
@@ -305,8 +322,16 @@ namespace rollnip
     for (const auto &r : gather_rows(outer, 10, comm))
       data.outer.push_back(
         {r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7], r[8], r[9]});
-    for (const auto &r : gather_rows(bond, 5, comm))
-      data.bond.push_back({r[0], r[1], r[2], r[3], r[4]});
+    const auto bond_rows = gather_rows(bond, 5, comm);
+    const auto traction  = bond_traction(body);
+    AssertThrow(traction.size() == bond_rows.size(), ExcInternalError());
+    for (unsigned int k = 0; k < bond_rows.size(); ++k)
+      {
+        const auto &r = bond_rows[k];
+        AssertThrow(same_angle(r[0], traction[k].theta), ExcInternalError());
+        data.bond.push_back(
+          {r[0], traction[k].sigma_nn, traction[k].sigma_nt, r[3], r[4]});
+      }
     data.interfaces = interface_data(body);
     data.extremes   = field_extremes(body);
     return data;

@@ -51,12 +51,11 @@ namespace rollnip
   } // namespace NipQuantity
 
   double
-  error_order(const Parameters::Element     element,
+  error_order(const Parameters::Element /*element: the same orders*/,
               const NipQuantity::Index      q,
               const Parameters::ContactMode mode)
   {
     using namespace NipQuantity;
-    const bool q1 = element == Parameters::Element::q1_p0;
     switch (q)
       {
         // The contact edge: b, and theta0, which it follows, converge at
@@ -68,16 +67,15 @@ namespace rollnip
         case theta0:
         case half_chord:
           return mode == Parameters::ContactMode::nip_angle ? 1 : 1.2;
-        // Cell stresses extrapolated to the bond: first order with Q1-P0's
-        // constant pressure, faster with Q2-P1's linear one.
-        case bond_sigma_rr:
-        case bond_sigma_rtheta:
-          return q1 ? 1 : 1.5;
         // P, u0 and the peak pressure: second order (Q2-P1 at least) at a
         // prescribed P or u0, where the errors of the edge and of the
         // load partly cancel; first order at a prescribed theta0, where
         // they follow the contact edge (the default run's sequence at
-        // 8 deg: differences 0.031, 0.017, 0.0078, 0.0040 N/mm).
+        // 8 deg: differences 0.031, 0.017, 0.0078, 0.0040 N/mm). The bond
+        // traction from the core's nodal reactions follows the load: second
+        // order at a prescribed P (doc/accuracy.md, "Bond and interface
+        // tractions": Q1-P0 2.0 to 2.5 on a nip, 1.7 to 2.0 node by node
+        // under a prescribed pressure), first at a prescribed theta0.
         default:
           return mode == Parameters::ContactMode::nip_angle ? 1 : 2;
       }

@@ -41,14 +41,21 @@ namespace
       d[0] = std::max({d[0],
                        std::abs(a.outer[i].u_r - b.outer[i].u_r),
                        std::abs(a.outer[i].u_theta - b.outer[i].u_theta)});
+    // Not the last bond node: the corner where the free far edge meets the
+    // fixed bond is singular, and the traction recovered there from the
+    // core's reactions grows with the level and does not converge (its
+    // split difference 4.0e-4 MPa at level 3, against 4e-5 MPa at any
+    // other bond node). sigma_zz is the cells' own there.
     for (unsigned int i = 0; i < a.bond.size(); ++i)
       {
+        d[2] =
+          std::max(d[2], std::abs(a.bond[i].sigma_zz - b.bond[i].sigma_zz));
+        if (i + 1 == a.bond.size())
+          continue;
         d[1] =
           std::max({d[1],
                     std::abs(a.bond[i].sigma_rr - b.bond[i].sigma_rr),
                     std::abs(a.bond[i].sigma_rtheta - b.bond[i].sigma_rtheta)});
-        d[2] =
-          std::max(d[2], std::abs(a.bond[i].sigma_zz - b.bond[i].sigma_zz));
       }
     return d;
   }

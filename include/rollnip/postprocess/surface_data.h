@@ -22,20 +22,27 @@ namespace rollnip
     double shear_traction; ///< sigma_nt from the adjacent cells' stress
   };
 
-  /// One node of the bond surface r = R1.
+  /// One node of the bond surface r = R1 [MPa]. sigma_rr and sigma_rtheta
+  /// are the traction on the bond (there n = e_r: the core does not move),
+  /// recovered from the nodal reactions of the core; the hoop and axial
+  /// stresses are the adjacent cells' own.
   struct BondSurfacePoint
   {
     double theta; ///< reference angle [rad]
     double sigma_rr, sigma_rtheta, sigma_thetatheta, sigma_zz;
   };
 
-  /// One node of an interface between two layers. The traction
-  /// components are continuous across a bonded interface and averaged over
-  /// both sides; the hoop stress jumps and is given on each side [MPa].
+  /// One node of an interface between two layers [MPa]. The traction
+  /// sigma n (n the deformed interface's normal pointing away from the
+  /// axis, s its counter-clockwise tangent) is continuous across a bonded
+  /// interface and recovered from the inner layer's nodal forces; the
+  /// hoop stress (polar, at the deformed point) jumps and is given on each
+  /// side from its cells.
   struct InterfacePoint
   {
-    double theta; ///< reference angle [rad]
-    double sigma_rr, sigma_rtheta;
+    double theta;    ///< reference angle [rad]
+    double sigma_nn; ///< n . sigma n
+    double sigma_nt; ///< s . sigma n
     double sigma_thetatheta_inner, sigma_thetatheta_outer;
   };
 
