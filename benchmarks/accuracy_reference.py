@@ -246,6 +246,53 @@ def time_to_reach(header, rows):
         print("| " + " | ".join(line) + " |")
 
 
+def plot_front(header, rows, png):
+    """The front as a figure (gnuplot, if installed): the true error of P
+    and of b against the time per nip, indentation and load control, one
+    curve per element and mesh."""
+    if not shutil.which("gnuplot"):
+        print("(gnuplot not found: no figure)")
+        return
+    col = {name: i for i, name in enumerate(header)}
+    tmp = tempfile.mkdtemp(prefix="rollnip-front-plot.")
+    plots = {"P err": [], "b err": []}
+    for mode in ("indentation", "load"):
+        for element in ("Q1-P0", "Q2-P1"):
+            for mesh in ("fitted", "fixed"):
+                mine = [r for r in rows if r[1] == mode and r[2] == element
+                        and r[3] == mesh and r[6] != "failed"]
+                if not mine:
+                    continue
+                name = f"{mode}-{element}-{mesh}"
+                with open(os.path.join(tmp, name + ".dat"), "w") as f:
+                    for r in mine:
+                        f.write(f"{r[6]} {r[col['P err']]} {r[col['b err']]}"
+                                f" {r[4]}\n")
+                style = "lp" if mesh == "fitted" else "lp dt 2"
+                for k, c in (("P err", 2), ("b err", 3)):
+                    plots[k].append(
+                        f"'{tmp}/{name}.dat' using 1:{c} with {style} "
+                        f"title '{element}, {mesh} mesh, {mode} control'")
+    script = f"""set terminal pngcairo size 1100,480 font ',10'
+set output '{png}'
+set multiplot layout 1,2
+set logscale xy
+set grid
+set xlabel 'wall time per nip [s]'
+set key bottom left font ',8'
+set ylabel 'relative error of P'
+set title 'line load P against Q2-P1 level 3'
+plot {', '.join(plots['P err'])}
+set ylabel 'relative error of b'
+set title 'nip half-width b against Q2-P1 level 3'
+plot {', '.join(plots['b err'])}
+unset multiplot
+"""
+    subprocess.run(["gnuplot"], input=script, text=True, check=False)
+    shutil.rmtree(tmp, ignore_errors=True)
+    print(f"figure: {os.path.relpath(png, ROOT)}")
+
+
 def target_runs(tmp):
     """Accuracy/Target on P in each mode against the reference."""
     ref = reference(tmp, [3], FRONT_KEYS)[0]
@@ -322,6 +369,8 @@ def main():
             header, rows = front(tmp, [2] if quick else [2, 3])
         write_csv(f"accuracy-front-{SCENE}", header, rows)
         time_to_reach(header, rows)
+        plot_front(header, rows, os.path.join(
+            ROOT, "benchmarks", "results", f"accuracy_front_{SCENE}.png"))
         return
     if "--target" in sys.argv[1:]:
         with tempfile.TemporaryDirectory(prefix="rollnip-target.") as tmp:
