@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <rollnip/face/face_point.h>
 #include <rollnip/face/face_solver.h>
 #include <rollnip/face/nonlocal_face.h>
 #include <rollnip/global.h>
@@ -17,19 +18,6 @@ namespace rollnip
     {
       using Triplets = std::vector<Eigen::Triplet<double>>;
 
-      /// Three-point Gauss rule on [0, 1].
-      const double gauss_points[3]  = {0.5 - std::sqrt(0.15),
-                                       0.5,
-                                       0.5 + std::sqrt(0.15)};
-      const double gauss_weights[3] = {5. / 18, 8. / 18, 5. / 18};
-
-      /// A quadrature point of the face with each beam's shape values.
-      struct FacePoint
-      {
-        unsigned int          element;
-        double                y, weight, crown;
-        std::array<double, 4> roll, mate;
-      };
 
       /// The discrete face problem: x = (roll dofs, mate dofs, a).
       class FaceSystem
@@ -98,22 +86,8 @@ namespace rollnip
         for (unsigned int e = mesh.first_face_node; e < mesh.last_face_node;
              ++e)
           {
-            const double h = mesh.y[e + 1] - mesh.y[e];
-            for (unsigned int g = 0; g < 3; ++g)
-              {
-                FacePoint p;
-                p.element = e;
-                p.y       = mesh.y[e] + gauss_points[g] * h;
-                p.weight  = gauss_weights[g] * h;
-                p.crown   = model.crown ? model.crown(p.y) : 0.;
-                p.roll    = deflection_shape(gauss_points[g],
-                                          h,
-                                          shear_ratio(model.roll, h));
-                p.mate    = deflection_shape(gauss_points[g],
-                                          h,
-                                          shear_ratio(model.mate, h));
-                points.push_back(p);
-              }
+            for (unsigned int g = 0; g < n_face_points; ++g)
+              points.push_back(face_point(model, mesh, e, g));
           }
       }
 
@@ -130,14 +104,7 @@ namespace rollnip
       double
       FaceSystem::delta(const Eigen::VectorXd &x, const FacePoint &p) const
       {
-        double d = x[n - 1] + p.crown;
-        for (unsigned int i = 0; i < 4; ++i)
-          {
-            d -= p.roll[i] * x[2 * p.element + i];
-            if (n_mate > 0)
-              d -= p.mate[i] * x[n_roll + 2 * p.element + i];
-          }
-        return d;
+        return local_approach(x, p, n - 1, n_roll, n_mate > 0);
       }
 
       void

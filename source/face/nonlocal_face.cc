@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <rollnip/face/face_point.h>
 #include <rollnip/face/nonlocal_face.h>
 #include <rollnip/global.h>
 
@@ -16,18 +17,12 @@ namespace rollnip
     {
       using Triplets = std::vector<Eigen::Triplet<double>>;
 
-      const double gauss_points[3]  = {0.5 - std::sqrt(0.15),
-                                       0.5,
-                                       0.5 + std::sqrt(0.15)};
-      const double gauss_weights[3] = {5. / 18, 8. / 18, 5. / 18};
-
       /// A quadrature point of the face: both beams' deflection shapes and
       /// the hat functions of the line load's two nodes.
-      struct Point
+      struct Point : FacePoint
       {
-        unsigned int          element, face_node; ///< left face node
-        double                y, weight, crown, hat[2];
-        std::array<double, 4> roll, mate;
+        unsigned int face_node; ///< left face node
+        double       hat[2];
       };
 
       /**
@@ -100,22 +95,13 @@ namespace rollnip
                 fixed.emplace_back(i_q + k + i,
                                    i_q + k + j,
                                    m[i][j] + l2 / h * (i == j ? 1 : -1));
-            for (unsigned int g = 0; g < 3; ++g)
+            for (unsigned int g = 0; g < n_face_points; ++g)
               {
                 Point p;
-                p.element   = e;
-                p.face_node = k;
-                p.y         = mesh.y[e] + gauss_points[g] * h;
-                p.weight    = gauss_weights[g] * h;
-                p.crown     = model.crown ? model.crown(p.y) : 0.;
-                p.hat[0]    = 1 - gauss_points[g];
-                p.hat[1]    = gauss_points[g];
-                p.roll      = deflection_shape(gauss_points[g],
-                                          h,
-                                          shear_ratio(model.roll, h));
-                p.mate      = deflection_shape(gauss_points[g],
-                                          h,
-                                          shear_ratio(model.mate, h));
+                static_cast<FacePoint &>(p) = face_point(model, mesh, e, g);
+                p.face_node                 = k;
+                p.hat[0]                    = 1 - face_gauss_point(g);
+                p.hat[1]                    = face_gauss_point(g);
                 points.push_back(p);
                 for (unsigned int j = 0; j < 2; ++j)
                   {
@@ -141,14 +127,7 @@ namespace rollnip
       double
       NonlocalSystem::delta(const Eigen::VectorXd &x, const Point &p) const
       {
-        double d = x[i_a] + p.crown;
-        for (unsigned int i = 0; i < 4; ++i)
-          {
-            d -= p.roll[i] * x[2 * p.element + i];
-            if (n_mate > 0)
-              d -= p.mate[i] * x[n_roll + 2 * p.element + i];
-          }
-        return d;
+        return local_approach(x, p, i_a, n_roll, n_mate > 0);
       }
 
       void
