@@ -154,10 +154,16 @@ namespace rollnip
     /// The largest relative error of each quantity of the default scene's
     /// nips (run 30, u0 = 0.5-3 mm) at level 0 on the nip-fitted mesh,
     /// against Q2-P1 at level 3 (doc/accuracy.md, the speed-accuracy
-    /// front), rounded up; in the order of NipQuantity.
+    /// front), rounded up; in the order of NipQuantity. With P or u0
+    /// prescribed:
     constexpr double level0_error[2][NipQuantity::n_quantities] = {
       {6e-3, 4.5e-3, 2.5e-3, 6e-3, 5.5e-3, 1e-2, 2e-2, 5e-2}, // Q1-P0
       {6e-3, 6e-4, 5e-4, 6e-3, 5e-3, 7e-3, 2e-2, 3e-2}};      // Q2-P1
+    /// ... and with theta0 prescribed, where P and u0 follow the contact
+    /// edge (theta0 itself is given).
+    constexpr double level0_error_nip_angle[2][NipQuantity::n_quantities] = {
+      {1e-6, 2e-2, 1.2e-2, 2e-3, 1.5e-2, 2.2e-2, 2e-2, 2e-2},    // Q1-P0
+      {1e-6, 1.4e-2, 9e-3, 6e-4, 6e-3, 1.5e-2, 1.2e-2, 1.2e-2}}; // Q2-P1
 
     /// DoFs of the default scene's roll at level 0 per element.
     constexpr double level0_dofs[2] = {486, 1690};
@@ -337,8 +343,11 @@ namespace rollnip
                   const NipQuantity::Index      q,
                   const Parameters::ContactMode mode)
   {
-    const double p = error_order(candidate.element, q, mode);
-    return level0_error[element_index(candidate.element)][q] *
+    const double p     = error_order(candidate.element, q, mode);
+    const auto  &table = mode == Parameters::ContactMode::nip_angle
+                           ? level0_error_nip_angle
+                           : level0_error;
+    return table[element_index(candidate.element)][q] *
            std::pow(2., -p * candidate.level);
   }
 
