@@ -56,5 +56,31 @@ namespace rollnip
         }
       return d;
     }
+
+    void
+    apply_supports(const std::vector<unsigned int>           &supports,
+                   const std::vector<Eigen::Triplet<double>> &fixed,
+                   std::vector<Eigen::Triplet<double>>        entries,
+                   const unsigned int                         n,
+                   Eigen::VectorXd                           &residual,
+                   Eigen::SparseMatrix<double>               *tangent)
+    {
+      for (const unsigned int s : supports)
+        residual[s] = 0;
+      if (!tangent)
+        return;
+      std::vector<bool> supported(n, false);
+      for (const unsigned int s : supports)
+        supported[s] = true;
+      entries.insert(entries.end(), fixed.begin(), fixed.end());
+      std::vector<Eigen::Triplet<double>> kept;
+      for (const auto &e : entries)
+        if (!supported[e.row()] && !supported[e.col()])
+          kept.push_back(e);
+      for (const unsigned int s : supports)
+        kept.emplace_back(s, s, 1.);
+      tangent->resize(n, n);
+      tangent->setFromTriplets(kept.begin(), kept.end());
+    }
   } // namespace Face
 } // namespace rollnip

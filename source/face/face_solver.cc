@@ -8,6 +8,7 @@
 #include <Eigen/Sparse>
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace rollnip
@@ -145,22 +146,8 @@ namespace rollnip
                                          p.weight * t * dd[i] * dd[j]);
               }
           }
-        for (const unsigned int s : supports)
-          residual[s] = 0;
-        if (!tangent)
-          return;
-        std::vector<bool> supported(n, false);
-        for (const unsigned int s : supports)
-          supported[s] = true;
-        entries.insert(entries.end(), beam_entries.begin(), beam_entries.end());
-        Triplets kept;
-        for (const auto &e : entries)
-          if (!supported[e.row()] && !supported[e.col()])
-            kept.push_back(e);
-        for (const unsigned int s : supports)
-          kept.emplace_back(s, s, 1.);
-        tangent->resize(n, n);
-        tangent->setFromTriplets(kept.begin(), kept.end());
+        apply_supports(
+          supports, beam_entries, std::move(entries), n, residual, tangent);
       }
 
       std::array<double, 4>

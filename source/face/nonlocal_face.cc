@@ -7,6 +7,7 @@
 #include <Eigen/Sparse>
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace rollnip
@@ -164,22 +165,7 @@ namespace rollnip
                   }
               }
           }
-        for (const unsigned int s : supports)
-          r[s] = 0;
-        if (!J)
-          return;
-        std::vector<bool> supported(n, false);
-        for (const unsigned int s : supports)
-          supported[s] = true;
-        entries.insert(entries.end(), fixed.begin(), fixed.end());
-        Triplets kept;
-        for (const auto &e : entries)
-          if (!supported[e.row()] && !supported[e.col()])
-            kept.push_back(e);
-        for (const unsigned int s : supports)
-          kept.emplace_back(s, s, 1.);
-        J->resize(n, n);
-        J->setFromTriplets(kept.begin(), kept.end());
+        apply_supports(supports, fixed, std::move(entries), n, r, J);
       }
 
       std::vector<double>

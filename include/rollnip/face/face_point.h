@@ -5,8 +5,10 @@
 #include <rollnip/face/face_solver.h>
 
 #include <Eigen/Dense>
+#include <Eigen/Sparse>
 
 #include <array>
+#include <vector>
 
 namespace rollnip
 {
@@ -49,6 +51,19 @@ namespace rollnip
                    const unsigned int     approach,
                    const unsigned int     n_roll,
                    const bool             with_mate);
+
+    /// Finishes the Newton system of a face problem with @p n unknowns:
+    /// zeroes the @p residual at the supported unknowns @p supports and, if
+    /// @p tangent is given, assembles it from the state-dependent
+    /// @p entries and the constant @p fixed ones without the supported rows
+    /// and columns, with 1 on their diagonal.
+    void
+    apply_supports(const std::vector<unsigned int>           &supports,
+                   const std::vector<Eigen::Triplet<double>> &fixed,
+                   std::vector<Eigen::Triplet<double>>        entries,
+                   const unsigned int                         n,
+                   Eigen::VectorXd                           &residual,
+                   Eigen::SparseMatrix<double>               *tangent);
   } // namespace Face
 } // namespace rollnip
 
