@@ -158,12 +158,17 @@ namespace rollnip
       1. / std::sqrt(1. / (w_user * w_user) +
                      1. / (w_aspect * w_aspect + w_low * w_low));
     // The total grading ratio whose last cell is w_surface, by bisection
-    // (the last cell shrinks with the ratio).
-    double lo = 1e-4, hi = std::max(1., m.radial_grading);
+    // (the last cell shrinks with the ratio). The ratio is that of the
+    // whole cover's grading, which a layered cover follows layer by layer:
+    // a top layer of one coarse cell cannot thin, and searching on its
+    // cell drove the ratio to its bound and the cells below the interface
+    // to aspect ratios of 3e3.
+    const double h  = g.outer_radius - g.inner_radius;
+    double       lo = 1e-4, hi = std::max(1., m.radial_grading);
     for (unsigned int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i)
       {
         const double mid = 0.5 * (lo + hi);
-        (radial_steps(parameters, mid).back() < w_surface ? lo : hi) = mid;
+        (graded_steps(n, h, mid).back() < w_surface ? lo : hi) = mid;
       }
     std::vector<double> radii(n + 1, g.inner_radius);
     const auto          steps = radial_steps(parameters, 0.5 * (lo + hi));
