@@ -60,16 +60,21 @@ namespace rollnip
     unsigned int                    n      = 0;
     for (const unsigned int c : counts)
       n += c;
-    if (counts.size() == 1)
-      return graded_steps(n, radii[1] - radii[0], ratio);
-    const double        growth = n > 1 ? std::pow(ratio, 1. / (n - 1)) : 1.;
+    // One grading for the whole cover; each layer takes its cells of it,
+    // stretched to fill the layer, so that cell sizes change smoothly
+    // through the interfaces and two equal layers are one layer.
+    const std::vector<double> whole =
+      graded_steps(n, radii.back() - radii.front(), ratio);
     std::vector<double> steps;
+    unsigned int        k = 0;
     for (unsigned int j = 0; j < counts.size(); ++j)
       {
-        const auto layer = graded_steps(counts[j],
-                                        radii[j + 1] - radii[j],
-                                        std::pow(growth, counts[j] - 1.));
-        steps.insert(steps.end(), layer.begin(), layer.end());
+        double sum = 0;
+        for (unsigned int i = k; i < k + counts[j]; ++i)
+          sum += whole[i];
+        for (unsigned int i = k; i < k + counts[j]; ++i)
+          steps.push_back(whole[i] * (radii[j + 1] - radii[j]) / sum);
+        k += counts[j];
       }
     return steps;
   }

@@ -150,7 +150,8 @@ namespace rollnip
     // the surface would coarsen the cells that carry it to the core). A
     // smooth minimum, bounded below by a tenth of the user's cell, keeps
     // P(theta0) smooth.
-    const double w_user = radial_steps(parameters, m.radial_grading).back();
+    const double h      = g.outer_radius - g.inner_radius;
+    const double w_user = graded_steps(n, h, m.radial_grading).back();
     const double aspect = 1 + (max_nip_cell_aspect - 1) * cover_weight(theta0);
     const double w_aspect = aspect * g.outer_radius * theta0 / n_nip_cells;
     const double w_low    = 0.1 * w_user;
@@ -158,13 +159,12 @@ namespace rollnip
       1. / std::sqrt(1. / (w_user * w_user) +
                      1. / (w_aspect * w_aspect + w_low * w_low));
     // The total grading ratio whose last cell is w_surface, by bisection
-    // (the last cell shrinks with the ratio). The ratio is that of the
-    // whole cover's grading, which a layered cover follows layer by layer:
-    // a top layer of one coarse cell cannot thin, and searching on its
-    // cell drove the ratio to its bound and the cells below the interface
-    // to aspect ratios of 3e3.
-    const double h  = g.outer_radius - g.inner_radius;
-    double       lo = 1e-4, hi = std::max(1., m.radial_grading);
+    // (the last cell shrinks with the ratio). Both are the whole cover's
+    // grading, which a layered cover follows layer by layer: a top layer
+    // of one coarse cell cannot thin, and searching on its own cell drove
+    // the ratio to its bound and the cells below the interface to aspect
+    // ratios of 3e3.
+    double lo = 1e-4, hi = std::max(1., m.radial_grading);
     for (unsigned int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i)
       {
         const double mid = 0.5 * (lo + hi);

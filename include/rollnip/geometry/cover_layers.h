@@ -27,9 +27,9 @@ namespace rollnip
   std::vector<unsigned int>
   layer_cell_counts(const Parameters::AllParameters &parameters);
 
-  /// The coarse radial cell widths [mm] from R1 to R0: one geometric
-  /// growth factor throughout, chosen so that the last cell over the first
-  /// would be @p ratio on an unlayered cover, each layer filled exactly.
+  /// The coarse radial cell widths [mm] from R1 to R0: the geometric
+  /// grading of the whole cover with last over first cell @p ratio, each
+  /// layer taking its cells of it stretched to fill the layer exactly.
   std::vector<double>
   radial_steps(const Parameters::AllParameters &parameters, const double ratio);
 
