@@ -127,6 +127,7 @@ main(int argc, char **argv)
     face.read(file);
     Parameters::AccuracyTarget accuracy;
     accuracy.read(file);
+    const auto study_values = Parameters::StudyValues::read(file);
     if (root)
       std::cout << EngineeringInputs::describe(parameters);
     if (face.enabled && !validate_only)
@@ -134,7 +135,7 @@ main(int argc, char **argv)
     if (validate_only)
       return validate_mesh(parameters, file, communicator);
     if (!parameters.study.levels.empty())
-      return run_refinement_study(parameters, communicator);
+      return run_refinement_study(parameters, communicator, study_values);
     if (accuracy.target > 0)
       return run_to_accuracy_target(parameters, accuracy, communicator);
     const Parameters::AllParameters graded =

@@ -1,6 +1,7 @@
 #include <deal.II/base/numbers.h>
 
 #include <rollnip/app/accuracy_target.h>
+#include <rollnip/app/refinement_study.h>
 #include <rollnip/cost_estimate.h>
 #include <rollnip/engineering_inputs.h>
 #include <rollnip/face/face_parameters.h>
@@ -906,6 +907,7 @@ namespace rollnip
       Accuracy::declare(prm);
       Face::declare(prm);
       AccuracyTarget::declare(prm);
+      StudyValues::declare(prm);
     }
 
     void
