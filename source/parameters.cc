@@ -6,6 +6,7 @@
 #include <rollnip/engineering_inputs.h>
 #include <rollnip/face/face_parameters.h>
 #include <rollnip/loading/pressure_load.h>
+#include <rollnip/material/layer_order.h>
 #include <rollnip/parameter_entries.h>
 #include <rollnip/parameters.h>
 #include <rollnip/run_errors.h>
@@ -288,6 +289,7 @@ namespace rollnip
                          "G = 2 (C1 + C2), whole load in one step on the "
                          "undeformed surface");
       EngineeringInputs::declare_material(prm);
+      LayerOrder::declare(prm);
       prm.leave_subsection();
     }
 
@@ -959,6 +961,7 @@ namespace rollnip
       declare(prm);
       prm.parse_input(filename);
       parse(prm);
+      LayerOrder::apply(prm, *this);
       validate();
     }
 
