@@ -2,8 +2,9 @@
 # Plots the speed-accuracy front of a refinement study (Study/Refinement
 # levels): the estimated relative error of the first quantity (P for a
 # contact scene, u0 for a pressure scene) and, for contact, of the nip
-# half-width b, against the wall time of each run, one curve per element,
-# log-log. Writes OUTPUT_DIR/plots/study_front.png and .svg.
+# half-width b, against the wall time of each run, one curve per element
+# (per nip and element for a study over a sweep, labelled by its load or
+# other prescribed value), log-log. Writes OUTPUT_DIR/plots/study_front.png and .svg.
 #
 # Usage: bash scripts/plot_study.sh OUTPUT_DIR     (the directory of study.csv)
 set -euo pipefail
@@ -32,16 +33,44 @@ e2="$(col error_half_chord_mm || true)"
 
 tmp="$(mktemp -d "${TMPDIR:-/tmp}/rollnip-study.XXXXXX")"
 trap 'rm -rf "$tmp"' EXIT
-# One data file per element, rows with a zero error dropped (log scale).
-elements="$(tail -n +2 "$csv" | cut -d, -f1 | sort -u)"
+# One data file per nip (of a sweep) and variant, rows with a zero error
+# dropped (log scale).
+variant_col="$(col variant)"
+[ -n "$variant_col" ] || die "'$csv' has no variant column"
+nip_col="$(col nip || true)"
+value_col=""
+[ -n "$nip_col" ] && value_col=$((nip_col + 1))
+value_name="$(printf '%s\n' "$header" | cut -d, -f"${value_col:-1}")"
+value_name="${value_name#prescribed_}"
+case "$value_name" in
+  theta0_deg) value_label="theta0 = %s deg" ;;
+  u0_mm) value_label="u0 = %s mm" ;;
+  line_load_N_per_mm) value_label="P = %s N/mm" ;;
+  line_load_kN_per_m) value_label="P = %s kN/m" ;;
+  line_load_pli) value_label="P = %s pli" ;;
+  total_force_kN) value_label="F = %s kN" ;;
+  total_force_N) value_label="F = %s N" ;;
+  *) value_label="%s" ;;
+esac
+n_nips=1
+[ -n "$nip_col" ] && n_nips="$(tail -n +2 "$csv" | cut -d, -f"$nip_col" | sort -u | wc -l)"
 plots=""
-for element in $elements; do
-  awk -F, -v e="$element" 'NR > 1 && $1 == e' "$csv" >"$tmp/$element.dat"
-  plots="$plots '$tmp/$element.dat' using $wall:(\$$e1 > 0 ? \$$e1 : 1/0) with linespoints lw 2 title '$element: $e1_name',"
-  if [ -n "$e2" ]; then
-    plots="$plots '$tmp/$element.dat' using $wall:(\$$e2 > 0 ? \$$e2 : 1/0) with linespoints dt 2 lw 2 title '$element: nip half-width b',"
+i=0
+while IFS=, read -r key value variant; do
+  i=$((i + 1))
+  awk -F, -v n="$nip_col" -v k="$key" -v vc="$variant_col" -v v="$variant" \
+    'NR > 1 && (n == "" || $n == k) && $vc == v' "$csv" >"$tmp/$i.dat"
+  name="$variant"
+  if [ "$n_nips" -gt 1 ]; then
+    # shellcheck disable=SC2059
+    name="$(printf "$value_label" "$value"), $variant"
   fi
-done
+  plots="$plots '$tmp/$i.dat' using $wall:(\$$e1 > 0 ? \$$e1 : 1/0) with linespoints lw 2 lc $i title '$name: $e1_name',"
+  if [ -n "$e2" ]; then
+    plots="$plots '$tmp/$i.dat' using $wall:(\$$e2 > 0 ? \$$e2 : 1/0) with linespoints dt 2 lw 2 lc $i title '$name: nip half-width b',"
+  fi
+done < <(tail -n +2 "$csv" | awk -F, -v n="$nip_col" -v val="$value_col" -v vc="$variant_col" \
+  '{ key = n == "" ? "" : $n; value = val == "" ? "" : $val; k = key "," value "," $vc; if (!(k in seen)) { seen[k] = 1; print k } }')
 plots="${plots%,}"
 
 mkdir -p "$outdir/plots"

@@ -29,9 +29,21 @@ last="${nips[-1]}"
 
 plots=""
 colour=1
+# Each nip's load in the run's unit: its row of nip_report.csv, whose second
+# column names the unit (line_load_kN_per_m, line_load_pli, ...).
+report="$run/nip_report.csv"
+unit="N/mm"
+if [ -f "$report" ]; then
+  unit="$(head -n 1 "$report" | tr -d '\r' | cut -d, -f2 | sed 's/^line_load_//; s/^total_force_//; s/_per_/\//')"
+fi
 for nip in "${nips[@]}"; do
-  load="$(awk -F' = ' '/^nip_load_P_N_per_mm/ {printf "%.3g", $2}' "$nip/contact.txt")"
-  plots+="'$nip/outer_surface.csv' using 5:(\$8 > 0 ? \$8 : 1/0) with lines lw 2 lc $colour title 'roll, P = $load N/mm', "
+  row=$((colour + 1))
+  if [ -f "$report" ]; then
+    load="$(awk -F, -v r="$row" 'NR == r {printf "%.4g", $2}' "$report")"
+  else
+    load="$(awk -F' = ' '/^nip_load_P_N_per_mm/ {printf "%.3g", $2}' "$nip/contact.txt")"
+  fi
+  plots+="'$nip/outer_surface.csv' using 5:(\$8 > 0 ? \$8 : 1/0) with lines lw 2 lc $colour title 'roll, P = $load $unit', "
   plots+="'$nip/mating_roll/outer_surface.csv' using (abs(\$5)):(\$8 > 0 ? \$8 : 1/0) with points pt 6 ps 0.8 lc $colour title 'mating roll', "
   colour=$((colour + 1))
 done
@@ -39,7 +51,7 @@ xmax="$(awk -F, 'NR > 1 && $8 > 0 && $5 > m {m = $5} END {printf "%.3g", 1.3 * m
 gnuplot -e "set datafile separator ','; set terminal pngcairo enhanced font 'Sans,11' size 900,560; \
   set output '${prefix}_pressure.png'; set key top right; set grid; \
   set title 'Contact pressure on both rolls (lines: the roll, circles: the mating roll)'; \
-  set xlabel 'deformed contact coordinate x_2 [mm]'; set ylabel 'applied pressure f [MPa]'; \
+  set xlabel 'deformed contact coordinate x_2 [mm]'; set ylabel 'contact pressure f [MPa]'; \
   set xrange [0:$xmax]; plot ${plots%, }"
 
 # The two deformed surfaces of the last nip, and their undeformed circles.

@@ -2,12 +2,15 @@
 # Sets everything up (scripts/setup.sh) and runs rollnip on one parameter file.
 #
 # Usage: bash scripts/run.sh [FILE.prm]     (default: parameters/batra1980.prm)
-# A relative FILE.prm is taken from the directory you call this from; rollnip
-# itself runs from the repository root, so relative paths inside the file
-# (Output/Directory, Mesh/Mesh file) are relative to the repository root.
+# A relative FILE.prm, and relative paths inside it (Output/Directory,
+# Mesh/Mesh file), are taken from the directory you call this from, as when
+# you run build/rollnip there yourself.
 # After a successful run it draws the figures with scripts/plot_results.sh
 # into OUTPUT_DIR/plots/ (E = 6 (C1 + C2) for the nondimensional contact
 # pressure is taken from the file's Material section when both are set there).
+#
+# ROLLNIP_BIN=path/to/rollnip runs that binary instead of build/rollnip and
+# skips the setup (packages and build), as the tests do.
 set -euo pipefail
 
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -19,11 +22,14 @@ if [ ! -f "$prm" ]; then
 fi
 prm="$(cd "$(dirname "$prm")" && pwd)/$(basename "$prm")"
 
-bash "$repo_root/scripts/setup.sh"
+rollnip="${ROLLNIP_BIN:-}"
+if [ -z "$rollnip" ]; then
+  bash "$repo_root/scripts/setup.sh"
+  rollnip="$repo_root/build/rollnip"
+fi
 
-cd "$repo_root"
 status=0
-build/rollnip "$prm" || status=$?
+"$rollnip" "$prm" || status=$?
 
 # The output directory as rollnip resolved it (the last 'Directory' entry of
 # the Output subsection, default 'output').
@@ -35,7 +41,7 @@ outdir="$(awk '
   END { print (dir == "" ? "output" : dir) }' "$prm")"
 case "$outdir" in
   /*) ;;
-  *) outdir="$repo_root/$outdir" ;;
+  *) outdir="$PWD/$outdir" ;;
 esac
 
 echo

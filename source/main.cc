@@ -5,6 +5,7 @@
 #include <rollnip/app/face_run.h>
 #include <rollnip/app/nip_study.h>
 #include <rollnip/app/pressure_run.h>
+#include <rollnip/app/quick_nip.h>
 #include <rollnip/app/refinement_study.h>
 #include <rollnip/engineering_inputs.h>
 #include <rollnip/interrupt.h>
@@ -20,6 +21,10 @@ namespace
 {
   const char *const usage =
     "Usage: rollnip [options] FILE.prm\n"
+    "       rollnip nip --diameter 400 --cover 20 --hardness 70A --mate 300 "
+    "--load 40kN/m\n"
+    "                   (a nip from its engineering numbers: rollnip nip "
+    "--help)\n"
     "\n"
     "Computes the deformation and stresses of a rubber roll cover bonded to a\n"
     "rigid core under a follower pressure (plane strain, incompressible\n"
@@ -108,7 +113,9 @@ main(int argc, char **argv)
   std::string file;
   bool        validate_only = false;
   if (const int code =
-        parse_arguments(argc, argv, is_launch_root(), file, validate_only);
+        is_quick_nip(argc, argv)
+          ? prepare_quick_nip(argc, argv, is_launch_root(), file)
+          : parse_arguments(argc, argv, is_launch_root(), file, validate_only);
       code >= 0)
     return code;
 
@@ -127,6 +134,7 @@ main(int argc, char **argv)
     face.read(file);
     Parameters::AccuracyTarget accuracy;
     accuracy.read(file);
+    const auto study_values = Parameters::StudyValues::read(file);
     if (root)
       std::cout << EngineeringInputs::describe(parameters);
     if (face.enabled && !validate_only)
@@ -134,7 +142,7 @@ main(int argc, char **argv)
     if (validate_only)
       return validate_mesh(parameters, file, communicator);
     if (!parameters.study.levels.empty())
-      return run_refinement_study(parameters, communicator);
+      return run_refinement_study(parameters, communicator, study_values);
     if (accuracy.target > 0)
       return run_to_accuracy_target(parameters, accuracy, communicator);
     const Parameters::AllParameters graded =

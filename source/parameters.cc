@@ -1,10 +1,12 @@
 #include <deal.II/base/numbers.h>
 
 #include <rollnip/app/accuracy_target.h>
+#include <rollnip/app/refinement_study.h>
 #include <rollnip/cost_estimate.h>
 #include <rollnip/engineering_inputs.h>
 #include <rollnip/face/face_parameters.h>
 #include <rollnip/loading/pressure_load.h>
+#include <rollnip/material/layer_order.h>
 #include <rollnip/parameter_entries.h>
 #include <rollnip/parameters.h>
 #include <rollnip/run_errors.h>
@@ -287,6 +289,7 @@ namespace rollnip
                          "G = 2 (C1 + C2), whole load in one step on the "
                          "undeformed surface");
       EngineeringInputs::declare_material(prm);
+      LayerOrder::declare(prm);
       prm.leave_subsection();
     }
 
@@ -906,6 +909,7 @@ namespace rollnip
       Accuracy::declare(prm);
       Face::declare(prm);
       AccuracyTarget::declare(prm);
+      StudyValues::declare(prm);
     }
 
     void
@@ -957,6 +961,7 @@ namespace rollnip
       declare(prm);
       prm.parse_input(filename);
       parse(prm);
+      LayerOrder::apply(prm, *this);
       validate();
     }
 

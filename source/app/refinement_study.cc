@@ -8,10 +8,12 @@
 #include <rollnip/boundary_ids.h>
 #include <rollnip/geometry/roll_mesh.h>
 #include <rollnip/output/atomic_file.h>
+#include <rollnip/parameter_entries.h>
 #include <rollnip/problem.h>
 #include <rollnip/run_errors.h>
 #include <rollnip/scene/scene_builder.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -51,6 +53,73 @@ namespace rollnip
     return e;
   }
 
+  namespace Parameters
+  {
+    void
+    StudyValues::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Study");
+      declare_documented(prm,
+                         "Values",
+                         "all",
+                         Patterns::Anything(),
+                         "The nips of a contact sweep the study runs: all "
+                         "(every value of Contact/Values), or a list of "
+                         "values in the unit of Contact/Values (theta0 "
+                         "[deg], the line load in Contact/Load unit, or u0 "
+                         "[mm]), e.g. 60");
+      prm.leave_subsection();
+    }
+
+    void
+    StudyValues::parse(ParameterHandler &prm, const AllParameters &scene)
+    {
+      prm.enter_subsection("Study");
+      const std::string text = prm.get("Values");
+      prm.leave_subsection();
+      values.clear();
+      const auto items = Utilities::split_string_list(text);
+      if (items.empty() || (items.size() == 1 && items[0] == "all"))
+        return;
+      const auto &contact = scene.contact;
+      AssertThrow(contact.mode != ContactMode::none,
+                  ExcMessage("Study/Values names nips of a contact sweep: it "
+                             "needs Contact/Mode = nip angle, load or "
+                             "indentation"));
+      AssertThrow(!scene.study.levels.empty(),
+                  ExcMessage("Study/Values is set but Study/Refinement "
+                             "levels is empty: there is no study to run"));
+      const double scale =
+        contact.mode == ContactMode::nip_angle ? numbers::PI / 180.
+        : contact.mode == ContactMode::load    ? contact.load_unit.to_n_per_mm
+                                               : 1.;
+      for (const auto &item : items)
+        {
+          char        *end = nullptr;
+          const double x   = std::strtod(item.c_str(), &end);
+          AssertThrow(end != item.c_str() && *end == '\0' && std::isfinite(x) &&
+                        x > 0,
+                      ExcMessage("Study/Values: '" + item +
+                                 "' is not a positive number (give 'all' or "
+                                 "values in the unit of Contact/Values)"));
+          values.push_back(x * scale);
+        }
+    }
+
+    StudyValues
+    StudyValues::read(const std::string &filename)
+    {
+      ParameterHandler prm;
+      AllParameters::declare(prm);
+      prm.parse_input(filename);
+      AllParameters scene;
+      scene.parse(prm);
+      StudyValues nips;
+      nips.parse(prm, scene);
+      return nips;
+    }
+  } // namespace Parameters
+
   namespace
   {
     struct Quantity
@@ -84,8 +153,19 @@ namespace rollnip
       std::string         tag;           ///< for CSV and directories
     };
 
+    /// One nip of the sweep the study runs (a pressure scene: one, with
+    /// empty texts).
+    struct StudiedNip
+    {
+      double      value = 0;   ///< Contact/Values entry [rad, N/mm or mm]
+      std::string label;       ///< "P = 40 kN/m", for the screen
+      std::string directory;   ///< "nip-02/" below study/ for several nips
+      std::string csv_columns; ///< "2,40" before each row of study.csv
+    };
+
     struct Run
     {
+      unsigned int             nip     = 0;
       unsigned int             variant = 0;
       unsigned int             level   = 0;
       types::global_cell_index cells   = 0;
@@ -248,6 +328,7 @@ namespace rollnip
     /// refinement @p level, with its files below the study's directory.
     Parameters::AllParameters
     run_parameters(const Parameters::AllParameters &parameters,
+                   const StudiedNip                &nip,
                    const Variant                   &variant,
                    const unsigned int               level)
     {
@@ -262,9 +343,10 @@ namespace rollnip
       // The study measures the error itself, from all its levels.
       p.accuracy.error_estimate = false;
       p.output.directory        = parameters.output.directory + "/study/" +
-                           variant.tag + "-level-" + std::to_string(level);
+                           nip.directory + variant.tag + "-level-" +
+                           std::to_string(level);
       if (p.contact.mode != Parameters::ContactMode::none)
-        p.contact.values.resize(1);
+        p.contact.values = {nip.value};
       return p;
     }
 
@@ -300,10 +382,12 @@ namespace rollnip
       return code;
     }
 
-    /// Every variant at every level, in order, into @p runs; returns why
-    /// the study stopped early, empty if it did not.
+    /// Every nip, variant and level, in order, into @p runs, each said on
+    /// the screen; returns why the study stopped early, empty if it did
+    /// not.
     std::string
     run_all(const Parameters::AllParameters &parameters,
+            const std::vector<StudiedNip>   &nips,
             const std::vector<Variant>      &variants,
             std::vector<Run>                &runs,
             const MPI_Comm                   communicator)
@@ -311,36 +395,46 @@ namespace rollnip
       ConditionalOStream pcout(std::cout,
                                Utilities::MPI::this_mpi_process(communicator) ==
                                  0);
-      for (unsigned int vi = 0; vi < variants.size(); ++vi)
-        for (const unsigned int level : parameters.study.levels)
-          {
-            const Variant                  &variant = variants[vi];
-            const Parameters::AllParameters p =
-              run_parameters(parameters, variant, level);
-            pcout << "Study: " << variant.label << ", level " << level
-                  << std::endl;
-            Run         run;
-            std::string thrown;
-            const int   code = timed_run(p, run, thrown, communicator);
-            run.variant      = vi;
-            run.level        = level;
-            if (code != 0)
-              return variant.label + " at level " + std::to_string(level) +
-                     (thrown.empty() ? " did not converge"
-                                     : " failed: " + thrown) +
-                     " (see " + p.output.directory + ")";
-            runs.push_back(run);
-          }
+      for (unsigned int k = 0; k < nips.size(); ++k)
+        for (unsigned int vi = 0; vi < variants.size(); ++vi)
+          for (const unsigned int level : parameters.study.levels)
+            {
+              const Variant                  &variant = variants[vi];
+              const Parameters::AllParameters p =
+                run_parameters(parameters, nips[k], variant, level);
+              const std::string where =
+                (nips[k].label.empty()
+                   ? std::string()
+                   : "nip " + std::to_string(k + 1) + " of " +
+                       std::to_string(nips.size()) + ", " + nips[k].label +
+                       ", ") +
+                variant.label + ", level " + std::to_string(level);
+              pcout << "Study: " << where << std::endl;
+              Run         run;
+              std::string thrown;
+              const int   code = timed_run(p, run, thrown, communicator);
+              run.nip          = k;
+              run.variant      = vi;
+              run.level        = level;
+              if (code != 0)
+                return where +
+                       (thrown.empty() ? ": did not converge"
+                                       : ": failed: " + thrown) +
+                       " (see " + p.output.directory + ")";
+              runs.push_back(run);
+            }
       return "";
     }
 
     /// The header line of study.csv; leaves @p csv at the precision of its
     /// rows.
     void
-    write_csv_header(const std::vector<Quantity> &quantities,
+    write_csv_header(const std::string           &nip_columns,
+                     const std::vector<Quantity> &quantities,
                      std::ostringstream          &csv)
     {
-      csv << "variant,element,sector_deg,initial_steps,level,cells,dofs";
+      csv << nip_columns
+          << "variant,element,sector_deg,initial_steps,level,cells,dofs";
       for (const auto &q : quantities)
         csv << ',' << q.key;
       for (const auto &q : quantities)
@@ -371,7 +465,8 @@ namespace rollnip
     /// The table of the levels @p mine of @p variant with their errors
     /// against @p exact; their rows of study.csv go to @p csv.
     ConvergenceTable
-    variant_table(const Variant                    &variant,
+    variant_table(const StudiedNip                 &nip,
+                  const Variant                    &variant,
                   const std::vector<Run>           &mine,
                   const std::vector<double>        &exact,
                   const std::vector<Extrapolation> &ex,
@@ -384,7 +479,8 @@ namespace rollnip
           table.add_value("level", r.level);
           table.add_value("cells", static_cast<unsigned int>(r.cells));
           table.add_value("DoFs", static_cast<unsigned int>(r.dofs));
-          csv << variant.tag << ',' << element_name(variant.element) << ','
+          csv << nip.csv_columns << variant.tag << ','
+              << element_name(variant.element) << ','
               << variant.sector_angle / (numbers::PI / 180.) << ','
               << variant.initial_steps << ',' << r.level << ',' << r.cells
               << ',' << r.dofs;
@@ -448,7 +544,9 @@ namespace rollnip
     /// The study of variant @p vi: its table and limits to @p text, its
     /// rows to @p csv; returns its limits, empty if no level ran.
     std::vector<double>
-    report_variant(const Variant               &variant,
+    report_variant(const StudiedNip            &nip,
+                   const unsigned int           k,
+                   const Variant               &variant,
                    const unsigned int           vi,
                    const std::vector<Run>      &runs,
                    const std::vector<Quantity> &quantities,
@@ -458,7 +556,7 @@ namespace rollnip
     {
       std::vector<Run> mine;
       for (const auto &r : runs)
-        if (r.variant == vi)
+        if (r.nip == k && r.variant == vi)
           mine.push_back(r);
       if (mine.empty())
         return {};
@@ -468,9 +566,13 @@ namespace rollnip
       for (unsigned int q = 0; q < quantities.size(); ++q)
         exact[q] = ex[q].value;
       ConvergenceTable table =
-        variant_table(variant, mine, exact, ex, quantities, csv);
+        variant_table(nip, variant, mine, exact, ex, quantities, csv);
 
-      text << "Refinement study, " << variant.label
+      text << "Refinement study, "
+           << (nip.label.empty()
+                 ? std::string()
+                 : "nip " + std::to_string(k + 1) + " (" + nip.label + "), ")
+           << variant.label
            << " (e = relative error against the Richardson-extrapolated "
               "value; rates are log2 of the error reduction per level; "
               "process peak = the largest resident memory of the process "
@@ -538,38 +640,117 @@ namespace rollnip
         }
       text << '\n';
     }
+
+    /// The control of @p contact's mode: its name on the screen, its
+    /// study.csv column and the factor from the program's unit to the
+    /// user's.
+    void
+    control_names(const Parameters::Contact &contact,
+                  std::string               &name,
+                  std::string               &column,
+                  std::string               &unit,
+                  double                    &factor)
+    {
+      factor = 1;
+      if (contact.mode == Parameters::ContactMode::nip_angle)
+        {
+          name   = "theta0";
+          column = "prescribed_theta0_deg";
+          unit   = "deg";
+          factor = 180. / numbers::PI;
+        }
+      else if (contact.mode == Parameters::ContactMode::indentation)
+        {
+          name   = "u0";
+          column = "prescribed_u0_mm";
+          unit   = "mm";
+        }
+      else
+        {
+          name   = contact.load_unit.is_total_force() ? "F" : "P";
+          column = "prescribed_" + contact.load_unit.column_name();
+          unit   = contact.load_unit.name;
+          factor = 1. / contact.load_unit.to_n_per_mm;
+        }
+    }
+
+    /// The nips the study runs: those of @p chosen, or every value of
+    /// Contact/Values; one unnamed nip for a pressure scene. The header
+    /// columns of the nips go to @p csv_header.
+    std::vector<StudiedNip>
+    studied_nips(const Parameters::AllParameters &parameters,
+                 const Parameters::StudyValues   &chosen,
+                 std::string                     &csv_header)
+    {
+      const auto &contact = parameters.contact;
+      if (contact.mode == Parameters::ContactMode::none)
+        return {StudiedNip()};
+      const std::vector<double> &values =
+        chosen.values.empty() ? contact.values : chosen.values;
+      std::string name, column, unit;
+      double      factor = 1;
+      control_names(contact, name, column, unit, factor);
+      csv_header = "nip," + column + ",";
+      std::vector<StudiedNip> nips;
+      for (unsigned int k = 0; k < values.size(); ++k)
+        {
+          StudiedNip         nip;
+          std::ostringstream v, number;
+          v << std::setprecision(8) << values[k] * factor;
+          number << std::setw(2) << std::setfill('0') << k + 1;
+          nip.value     = values[k];
+          nip.label     = name + " = " + v.str() + " " + unit;
+          nip.directory = values.size() > 1 ? "nip-" + number.str() + "/" : "";
+          nip.csv_columns = std::to_string(k + 1) + "," + v.str() + ",";
+          nips.push_back(nip);
+        }
+      return nips;
+    }
   } // namespace
 
   int
   run_refinement_study(const Parameters::AllParameters &parameters,
-                       const MPI_Comm                   communicator)
+                       const MPI_Comm                   communicator,
+                       const Parameters::StudyValues   &chosen)
   {
     const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
     ConditionalOStream pcout(std::cout, root);
     const bool         contact =
       parameters.contact.mode != Parameters::ContactMode::none;
     const auto &quantities = contact ? contact_quantities : pressure_quantities;
-    const std::vector<Variant> variants = make_variants(parameters);
-    const std::string         &top      = parameters.output.directory;
+    const std::vector<Variant>    variants = make_variants(parameters);
+    const std::string            &top      = parameters.output.directory;
+    std::string                   nip_columns;
+    const std::vector<StudiedNip> nips =
+      studied_nips(parameters, chosen, nip_columns);
+    if (nips.size() > 1)
+      pcout << "Study: " << nips.size() << " nips (every one of "
+            << (chosen.values.empty() ? "Contact/Values" : "Study/Values")
+            << "), " << variants.size() << " variant(s), "
+            << parameters.study.levels.size() << " level(s) each" << std::endl;
 
     std::vector<Run>  runs;
     const std::string failure =
-      run_all(parameters, variants, runs, communicator);
+      run_all(parameters, nips, variants, runs, communicator);
 
-    // One table per element; errors against the extrapolated value of
-    // that element's sequence.
+    // One table per nip and element; errors against the extrapolated value
+    // of that sequence.
     std::ostringstream text, csv;
-    write_csv_header(quantities, csv);
-    std::vector<std::vector<double>> limits(variants.size());
-    std::vector<double>              variant_wall(variants.size(), 0.);
-    for (const auto &r : runs)
-      variant_wall[r.variant] += r.wall;
-    for (unsigned int vi = 0; vi < variants.size(); ++vi)
-      limits[vi] =
-        report_variant(variants[vi], vi, runs, quantities, contact, text, csv);
-    if (!parameters.study.sector_angles.empty() ||
-        !parameters.study.initial_steps.empty())
-      compare_variants(variants, limits, variant_wall, quantities, text);
+    write_csv_header(nip_columns, quantities, csv);
+    for (unsigned int k = 0; k < nips.size(); ++k)
+      {
+        std::vector<std::vector<double>> limits(variants.size());
+        std::vector<double>              variant_wall(variants.size(), 0.);
+        for (const auto &r : runs)
+          if (r.nip == k)
+            variant_wall[r.variant] += r.wall;
+        for (unsigned int vi = 0; vi < variants.size(); ++vi)
+          limits[vi] = report_variant(
+            nips[k], k, variants[vi], vi, runs, quantities, contact, text, csv);
+        if (!parameters.study.sector_angles.empty() ||
+            !parameters.study.initial_steps.empty())
+          compare_variants(variants, limits, variant_wall, quantities, text);
+      }
     if (!failure.empty())
       text << "The study stopped: " << failure << "\n";
     pcout << '\n' << text.str();

@@ -2,6 +2,7 @@
 #define rollnip_app_refinement_study_h
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
 
 #include <rollnip/parameters.h>
 
@@ -32,17 +33,43 @@ namespace rollnip
   extrapolate(const std::vector<double> &values,
               const double max_order = std::numeric_limits<double>::max());
 
+  namespace Parameters
+  {
+    /// Study/Values: the nips of a contact sweep the refinement study
+    /// runs; by default all of Contact/Values, so that the study answers
+    /// for every load the user asked about, not only the first.
+    struct StudyValues
+    {
+      /// In the program's units (theta0 [rad], P [N/mm], u0 [mm]); empty:
+      /// every value of Contact/Values.
+      std::vector<double> values;
+
+      /// Declares Study/Values.
+      static void
+      declare(ParameterHandler &prm);
+      /// The entry of @p prm, in the unit of Contact/Values of @p scene.
+      void
+      parse(ParameterHandler &prm, const AllParameters &scene);
+      /// The entry of the parameter file @p filename.
+      static StudyValues
+      read(const std::string &filename);
+    };
+  } // namespace Parameters
+
   /**
    * The refinement study (Study subsection): the scene of @p parameters at
    * each of Study/Refinement levels, for each of Study/Elements; for a
-   * contact scene the first of Contact/Values is the nip. Prints a deal.II
-   * ConvergenceTable per element and writes study.csv and study.txt in
-   * Output/Directory, each run's own files below study/. Returns the exit
+   * contact scene, for each nip of @p nips (default: every value of
+   * Contact/Values), said on the screen. Prints a deal.II ConvergenceTable
+   * per nip and element and writes study.csv (with the nip and its
+   * prescribed value) and study.txt in Output/Directory, each run's own
+   * files below study/ (study/nip-NN/ for several nips). Returns the exit
    * code; a failed run ends the study with the rows before it written.
    */
   int
   run_refinement_study(const Parameters::AllParameters &parameters,
-                       MPI_Comm                         communicator);
+                       MPI_Comm                         communicator,
+                       const Parameters::StudyValues   &nips = {});
 } // namespace rollnip
 
 #endif
