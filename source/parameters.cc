@@ -7,6 +7,7 @@
 #include <rollnip/loading/pressure_load.h>
 #include <rollnip/parameter_entries.h>
 #include <rollnip/parameters.h>
+#include <rollnip/rolling/rolling_parameters.h>
 #include <rollnip/run_errors.h>
 
 #include <filesystem>
@@ -906,6 +907,7 @@ namespace rollnip
       Accuracy::declare(prm);
       Face::declare(prm);
       AccuracyTarget::declare(prm);
+      Rolling::declare(prm);
     }
 
     void
