@@ -15,6 +15,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <rollnip/boundary_ids.h>
+#include <rollnip/output/atomic_file.h>
 #include <rollnip/rolling/cover_temperature.h>
 
 #include <algorithm>
@@ -318,7 +319,21 @@ namespace rollnip
     out.attach_dof_handler(dofs);
     out.add_data_vector(temperature, "temperature_degC");
     out.build_patches(mapping, fe.degree);
-    out.write_vtu_in_parallel(directory + "/" + name + ".vtu",
-                              mesh.get_communicator());
+    const MPI_Comm     comm  = mesh.get_communicator();
+    const unsigned int rank  = Utilities::MPI::this_mpi_process(comm);
+    auto               piece = [&](const unsigned int r) {
+      return name + "." + Utilities::int_to_string(r, 4) + ".vtu";
+    };
+    write_atomically(directory + "/" + piece(rank),
+                     [&](std::ostream &o) { out.write_vtu(o); });
+    MPI_Barrier(comm);
+    if (rank != 0)
+      return;
+    std::vector<std::string> pieces;
+    for (unsigned int r = 0; r < Utilities::MPI::n_mpi_processes(comm); ++r)
+      pieces.push_back(piece(r));
+    write_atomically(directory + "/" + name + ".pvtu", [&](std::ostream &o) {
+      out.write_pvtu_record(o, pieces);
+    });
   }
 } // namespace rollnip

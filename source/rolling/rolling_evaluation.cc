@@ -175,12 +175,18 @@ namespace rollnip
                "surface_temperature_degC,max_temperature_degC,"
                "V_tau_over_b\n"
             << std::setprecision(8);
+        std::vector<const SpeedRow *> sorted;
         for (const auto &r : rows)
-          out << user_speed(rolling, r.loss.speed) << ','
-              << r.loss.rolling_resistance << ',' << r.loss.power << ','
-              << r.heat.generated << ',' << r.heat.bond << ',' << r.heat.surface
-              << ',' << r.heat.max << ',' << 1e3 * r.loss.speed * tau / b
-              << '\n';
+          sorted.push_back(&r);
+        std::sort(sorted.begin(), sorted.end(), [](auto a, auto b) {
+          return a->loss.speed < b->loss.speed;
+        });
+        for (const SpeedRow *r : sorted)
+          out << user_speed(rolling, r->loss.speed) << ','
+              << r->loss.rolling_resistance << ',' << r->loss.power << ','
+              << r->heat.generated << ',' << r->heat.bond << ','
+              << r->heat.surface << ',' << r->heat.max << ','
+              << 1e3 * r->loss.speed * tau / b << '\n';
       });
     }
 
@@ -273,9 +279,14 @@ namespace rollnip
         print(n, rolling);
         // First order in V tau / b: the loss of a Maxwell branch peaks
         // near V tau ~ b and falls beyond, where this route keeps rising.
-        if (n.speed_over_nip > 0.1)
+        const double fastest =
+          *std::max_element(rolling.speeds.begin(), rolling.speeds.end());
+        const double ratio = 1e3 * fastest * tau / nip.half_chord;
+        if (ratio > 0.1)
           std::cerr << "rollnip: warning: Rolling: V tau / b = "
-                    << std::setprecision(3) << n.speed_over_nip
+                    << std::setprecision(3) << ratio << " at "
+                    << user_speed(rolling, fastest) << ' '
+                    << (rolling.in_m_per_min ? "m/min" : "m/s")
                     << " (tau = " << tau << " s, b = " << nip.half_chord
                     << " mm): the first-order loss needs V tau << b and "
                        "overestimates it here"

@@ -55,8 +55,8 @@ namespace rollnip
     solve(const std::function<double(double)> &source,
           const Parameters::Rolling           &rolling);
 
-    /// The temperature as @p directory/@p name.vtu (one file written by
-    /// all processes, collective).
+    /// The temperature as @p directory/@p name.pvtu with one .vtu piece
+    /// per process (collective).
     void
     write_vtu(const std::string &directory, const std::string &name) const;
 

@@ -27,7 +27,7 @@ namespace rollnip
    * the headline on rank 0, warns (one line) when V tau / b is not small,
    * and writes rolling_profile.csv (dissipation and temperature over the
    * cover's thickness) and rolling_speeds.csv to @p directory if
-   * @p write_csv, temperature.vtu if @p write_vtu. @p indenter_radius
+   * @p write_csv, temperature.pvtu if @p write_vtu. @p indenter_radius
    * [mm] (inf: flat) is for the linear estimate; 0: none.
    */
   RollingNumbers
