@@ -12,8 +12,9 @@
 // loss within a cell of them is O(h)), and the Richardson extrapolation of
 // the two finest levels lies within 0.5 % of the closed form. The
 // remaining small-nip terms are O(theta0^2, u0/R0), about 0.1 % here.
-// Also: zero speed and tau = 0 lose nothing, the loss grows like V^2, and
-// the finite-strain isochoric stress tends to linear theory's.
+// Also: zero speed and tau = 0 lose nothing, the loss grows like V^2, a
+// Prony series of the same sum g_i tau_i loses the same, and the
+// finite-strain isochoric stress tends to linear theory's.
 
 #include <rollnip/contact/inverse_contact.h>
 #include <rollnip/rolling/cover_circles.h>
@@ -82,6 +83,16 @@ namespace
         checker.check(still.power == 0 && still.rolling_resistance == 0 &&
                         elastic.power == 0,
                       "V = 0 and tau = 0 dissipate exactly nothing");
+        // A Prony series of the same sum g_i tau_i loses the same to first
+        // order.
+        Parameters::Rolling prony = kelvin_voigt(tau);
+        prony.model               = Parameters::ViscoelasticModel::prony;
+        prony.layers              = {{{0.5, 0.125, 2.}, {1e-4, 2e-4, 1.25e-5}}};
+        const auto branches = first_order_loss(circles, prony, R0, sector, V);
+        checker.check(std::abs(branches.power / loss.power - 1) < 1e-12,
+                      "a Prony series with sum g_i tau_i = tau loses as the "
+                      "Kelvin-Voigt cover (ratio " +
+                        testing::num(branches.power / loss.power) + ")");
         const auto twice =
           first_order_loss(circles, kelvin_voigt(tau), R0, sector, 2 * V);
         checker.check(std::abs(twice.power / loss.power - 4) < 1e-12,
