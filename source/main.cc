@@ -11,6 +11,7 @@
 #include <rollnip/interrupt.h>
 #include <rollnip/mpi_start.h>
 #include <rollnip/parameters.h>
+#include <rollnip/rolling/rolling_parameters.h>
 #include <rollnip/run_errors.h>
 
 #include <iostream>
@@ -135,6 +136,14 @@ main(int argc, char **argv)
     Parameters::AccuracyTarget accuracy;
     accuracy.read(file);
     const auto study_values = Parameters::StudyValues::read(file);
+    Parameters::Rolling rolling;
+    rolling.read(file);
+    AssertThrow(!rolling.enabled ||
+                  (!face.enabled && parameters.study.levels.empty() &&
+                   accuracy.target == 0),
+                ExcMessage("Rolling/Enabled works on a nip sweep: not with "
+                           "Face/Enabled, Study/Refinement levels or "
+                           "Accuracy/Target"));
     if (root)
       std::cout << EngineeringInputs::describe(parameters);
     if (face.enabled && !validate_only)
@@ -148,7 +157,7 @@ main(int argc, char **argv)
     const Parameters::AllParameters graded =
       adapt_grading(parameters, communicator);
     if (graded.contact.mode != Parameters::ContactMode::none)
-      return run_nip_study(graded, communicator);
+      return run_nip_study(graded, communicator, nullptr, &rolling);
     return run_pressure(graded, communicator);
   });
 }

@@ -9,6 +9,7 @@
 #include <rollnip/material/layer_order.h>
 #include <rollnip/parameter_entries.h>
 #include <rollnip/parameters.h>
+#include <rollnip/rolling/rolling_parameters.h>
 #include <rollnip/run_errors.h>
 
 #include <filesystem>
@@ -910,6 +911,7 @@ namespace rollnip
       Face::declare(prm);
       AccuracyTarget::declare(prm);
       StudyValues::declare(prm);
+      Rolling::declare(prm);
     }
 
     void

@@ -24,8 +24,9 @@ namespace rollnip
     /// errors (nan: none).
     struct ReportRow
     {
-      double load_user, load, width, u0, peak, mean, dwell;
-      double load_err, width_err, u0_err, peak_err, mean_err;
+      double         load_user, load, width, u0, peak, mean, dwell;
+      double         load_err, width_err, u0_err, peak_err, mean_err;
+      RollingNumbers rolling; ///< the rolling loss, if asked
     };
 
     /// @p value (three decimals) with its estimated error @p error (two
@@ -67,6 +68,7 @@ namespace rollnip
       row.u0_err    = err(NipQuantity::indentation);
       row.peak_err  = err(NipQuantity::peak_pressure);
       row.mean_err  = err(NipQuantity::mean_pressure);
+      row.rolling   = r.rolling;
       return row;
     }
 
@@ -82,6 +84,30 @@ namespace rollnip
               ? ", an estimate from hardness " + roll.hardness_source
               : ", from C1 and C2");
       return s.str();
+    }
+
+    /// The rolling columns of the report (doc/rolling.md), if computed.
+    void
+    print_rolling(const std::vector<ReportRow> &rows)
+    {
+      if (rows.empty() || !rows[0].rolling.available)
+        return;
+      std::cout << "Rolling at " << std::setprecision(4)
+                << rows[0].rolling.speed
+                << " m/s (first order in V tau / b):" << std::endl
+                << std::setw(16) << "F_r [N/mm]" << std::setw(18)
+                << "drive power [W/m]" << std::setw(16) << "T bond [degC]"
+                << std::setw(18) << "T surface [degC]" << std::setw(15)
+                << "T max [degC]" << std::setw(12) << "V tau / b" << std::endl;
+      for (const auto &r : rows)
+        std::cout << std::setprecision(4) << std::setw(16)
+                  << r.rolling.rolling_resistance << std::setw(18)
+                  << r.rolling.power << std::fixed << std::setprecision(2)
+                  << std::setw(16) << r.rolling.bond_temperature
+                  << std::setw(18) << r.rolling.surface_temperature
+                  << std::setw(15) << r.rolling.max_temperature
+                  << std::defaultfloat << std::setprecision(3) << std::setw(12)
+                  << r.rolling.speed_over_nip << std::endl;
     }
 
     void
@@ -120,6 +146,7 @@ namespace rollnip
             std::cout << std::setw(12) << r.dwell;
           std::cout << std::defaultfloat << std::endl;
         }
+      print_rolling(rows);
     }
 
     void
@@ -137,6 +164,7 @@ namespace rollnip
       const double           E_mate =
         two_rolls ? mate->surface_layer().youngs_modulus() : 0;
       const bool mate_estimate = two_rolls && mate->modulus_from_hardness();
+      const bool rolling       = !rows.empty() && rows[0].rolling.available;
       write_atomically(file, [&](std::ostream &out) {
         out << "nip," << c.load_unit.column_name()
             << ",line_load_N_per_mm,nip_width_2b_mm,indentation_u0_mm,"
@@ -148,7 +176,13 @@ namespace rollnip
                           : "")
             << ",line_load_err_N_per_mm,nip_width_2b_err_mm,"
                "indentation_u0_err_mm,peak_pressure_err_MPa,"
-               "mean_pressure_err_MPa\n"
+               "mean_pressure_err_MPa"
+            << (rolling ? ",rolling_speed_m_per_s,rolling_resistance_N_per_mm,"
+                          "drive_power_W_per_m,heat_W_per_m,"
+                          "bond_temperature_degC,surface_temperature_degC,"
+                          "max_temperature_degC"
+                        : "")
+            << '\n'
             << std::setprecision(10);
         for (unsigned int i = 0; i < rows.size(); ++i)
           {
@@ -162,7 +196,13 @@ namespace rollnip
             if (two_rolls)
               out << ',' << E_mate << ',' << (mate_estimate ? "yes" : "no");
             out << ',' << r.load_err << ',' << r.width_err << ',' << r.u0_err
-                << ',' << r.peak_err << ',' << r.mean_err << '\n';
+                << ',' << r.peak_err << ',' << r.mean_err;
+            const RollingNumbers &n = r.rolling;
+            if (rolling)
+              out << ',' << n.speed << ',' << n.rolling_resistance << ','
+                  << n.power << ',' << n.power << ',' << n.bond_temperature
+                  << ',' << n.surface_temperature << ',' << n.max_temperature;
+            out << '\n';
           }
       });
     }

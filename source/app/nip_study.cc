@@ -14,12 +14,15 @@
 #include <rollnip/output/polyline_vtp.h>
 #include <rollnip/output/silence_cerr.h>
 #include <rollnip/output/sweep_pvd.h>
+#include <rollnip/rolling/rolling_evaluation.h>
+#include <rollnip/rolling/rolling_parameters.h>
 #include <rollnip/run_errors.h>
 #include <rollnip/scene/scene_builder.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <limits>
 #include <memory>
@@ -500,6 +503,47 @@ namespace rollnip
       pvd.add(time, nip + "/contact_pressure.vtp", 2);
     }
 
+    /// The rolling post-process of the converged nip @p row of @p scene
+    /// into @p row.rolling, its files in @p dir (collective).
+    void
+    evaluate_rolling_nip(Scene                           &scene,
+                         const Parameters::AllParameters &parameters,
+                         const Parameters::Rolling       &rolling,
+                         const std::string               &dir,
+                         NipRow                          &row)
+    {
+      const MPI_Comm comm = scene.roll().communicator();
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        make_directories(dir);
+      MPI_Barrier(comm);
+      row.rolling = evaluate_rolling(scene.roll().body(),
+                                     row.nonlinear,
+                                     rolling,
+                                     parameters.contact.indenter_radius,
+                                     dir,
+                                     parameters.output.write_csv,
+                                     parameters.output.write_vtu);
+    }
+
+    /// Appends @p lines to @p dir/summary.txt (rank 0), which
+    /// write_results() has just written.
+    void
+    append_to_summary(const std::string &dir,
+                      const std::string &lines,
+                      const MPI_Comm     communicator)
+    {
+      if (Utilities::MPI::this_mpi_process(communicator) != 0)
+        return;
+      const std::string  file = dir + "/summary.txt";
+      std::ifstream      in(file);
+      std::ostringstream content;
+      content << in.rdbuf();
+      in.close();
+      write_atomically(file, [&](std::ostream &out) {
+        out << content.str() << lines;
+      });
+    }
+
     /// Solves the nips of Contact/Values in turn, evaluates and writes
     /// each, and adds the converged ones to @p rows, with their linear
     /// companions if @p linear is given and their error estimates if
@@ -510,6 +554,7 @@ namespace rollnip
                Scene                           *linear_scene,
                ErrorCompanion                  *companion,
                const Parameters::AllParameters &parameters,
+               const Parameters::Rolling       *rolling,
                std::vector<NipRow>             &rows)
     {
       RollProblem       &nonlinear = scene.roll();
@@ -533,7 +578,9 @@ namespace rollnip
           const std::string vtu =
             "/solution-" + Utilities::int_to_string(n + 1, 4) + ".pvtu";
           NipRow row;
-          row.nonlinear = control.solve(values[n]);
+          Timer  nip_clock;
+          row.nonlinear            = control.solve(values[n]);
+          const double nip_seconds = nip_clock.wall_time();
           if (row.nonlinear.converged)
             {
               evaluate_nip(scene, n + 1, row);
@@ -542,16 +589,29 @@ namespace rollnip
                   row.error = companion->estimate(row, values[n]);
                   print_error_estimate(row, n + 1, nonlinear.communicator());
                 }
+              if (rolling && rolling->enabled)
+                evaluate_rolling_nip(scene, parameters, *rolling, dir, row);
             }
           nonlinear.set_output_directory(dir);
           if (parameters.output.write_vtu)
             nonlinear.write_vtu(n + 1, 1.);
+          // The nip's own solve time beside the post-process's, for the
+          // cost of the rolling loss (benchmarks/rolling_cost.sh).
+          const std::string rolling_text =
+            row.rolling.available
+              ? rolling_lines(row.rolling) +
+                  "nip_solve_wall_time_s = " + std::to_string(nip_seconds) +
+                  '\n'
+              : "";
           write_nip(nonlinear,
                     row.nonlinear,
                     dir,
                     false,
-                    row.nonlinear.converged ? error_lines(row, parameters)
-                                            : "");
+                    row.nonlinear.converged
+                      ? error_lines(row, parameters) + rolling_text
+                      : "");
+          if (!rolling_text.empty())
+            append_to_summary(dir, rolling_text, nonlinear.communicator());
           contact.write_results(row.nonlinear,
                                 dir,
                                 n + 1,
@@ -645,7 +705,8 @@ namespace rollnip
   int
   run_nip_study(const Parameters::AllParameters &parameters,
                 const MPI_Comm                   communicator,
-                std::vector<NipRow>             *rows_out)
+                std::vector<NipRow>             *rows_out,
+                const Parameters::Rolling       *rolling)
   {
     std::vector<NipRow> rows;
     std::string         failure;
@@ -671,8 +732,13 @@ namespace rollnip
           companion =
             std::make_unique<ErrorCompanion>(parameters, communicator);
 
-        failure = sweep_nips(
-          *scene, control, linear.get(), companion.get(), parameters, rows);
+        failure = sweep_nips(*scene,
+                             control,
+                             linear.get(),
+                             companion.get(),
+                             parameters,
+                             rolling,
+                             rows);
 
         with_linear = static_cast<bool>(linear);
       }

@@ -6,6 +6,7 @@
 #include <rollnip/parameters.h>
 #include <rollnip/postprocess/error_estimate.h>
 #include <rollnip/problem.h>
+#include <rollnip/rolling/rolling_numbers.h>
 
 #include <memory>
 #include <string>
@@ -13,6 +14,11 @@
 
 namespace rollnip
 {
+  namespace Parameters
+  {
+    struct Rolling;
+  }
+
   /// One row of the nip characteristic (nip_characteristic.csv).
   struct NipRow
   {
@@ -25,7 +31,8 @@ namespace rollnip
     double        thin_layer_load = 0; ///< thin-layer P for the same half-chord
     types::global_dof_index n_dofs  = 0; ///< of the nonlinear problem
     unsigned int            n_cells = 0;
-    ErrorEstimate           error; ///< of the nonlinear nip's numbers
+    ErrorEstimate           error;   ///< of the nonlinear nip's numbers
+    RollingNumbers          rolling; ///< the rolling loss (if asked)
   };
 
   /// The numbers of @p row that carry an error estimate.
@@ -38,13 +45,16 @@ namespace rollnip
    * P or u0; writes each nip's files (in the output directory for one
    * value, in nip-NN/ below it for a sweep), the nip characteristic with
    * linear theory, Hertz and the thin-layer asymptote beside it, and
-   * prints the table, on the processes of @p communicator. Returns the
-   * exit code; the rows, if @p rows_out is given, go there too.
+   * prints the table, on the processes of @p communicator. With
+   * @p rolling enabled, each nip also gets its rolling loss and cover
+   * temperature (doc/rolling.md). Returns the exit code; the rows, if
+   * @p rows_out is given, go there too.
    */
   int
   run_nip_study(const Parameters::AllParameters &parameters,
                 MPI_Comm                         communicator,
-                std::vector<NipRow>             *rows_out = nullptr);
+                std::vector<NipRow>             *rows_out = nullptr,
+                const Parameters::Rolling       *rolling  = nullptr);
 
 } // namespace rollnip
 

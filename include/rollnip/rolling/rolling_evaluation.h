@@ -1,0 +1,47 @@
+#ifndef rollnip_rolling_rolling_evaluation_h
+#define rollnip_rolling_rolling_evaluation_h
+
+#include <rollnip/body/roll_body.h>
+#include <rollnip/contact/contact_result.h>
+#include <rollnip/rolling/first_order_loss.h>
+#include <rollnip/rolling/rolling_numbers.h>
+#include <rollnip/rolling/rolling_parameters.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace rollnip
+{
+  /// The mean dissipation density of @p loss as a function of the radius
+  /// r [mm] -> [W/m^3]: in each ring of cells the polynomial through its
+  /// circles (exact in the ring's radial Gauss rule), zero outside the
+  /// cover.
+  std::function<double(double)>
+  radial_heat_source(const RollingLoss &loss, const unsigned int degree);
+
+  /**
+   * The rolling post-process of the converged nip @p nip of @p body
+   * (collective): the circles' strain history, the first-order loss at
+   * every speed of @p rolling, the cover's temperature for each; prints
+   * the headline on rank 0, warns (one line) when V tau / b is not small,
+   * and writes rolling_profile.csv (dissipation and temperature over the
+   * cover's thickness) and rolling_speeds.csv to @p directory if
+   * @p write_csv, temperature.pvtu if @p write_vtu. @p indenter_radius
+   * [mm] (inf: flat) is for the linear estimate; 0: none.
+   */
+  RollingNumbers
+  evaluate_rolling(const RollBody            &body,
+                   const ContactResult       &nip,
+                   const Parameters::Rolling &rolling,
+                   const double               indenter_radius,
+                   const std::string         &directory,
+                   const bool                 write_csv,
+                   const bool                 write_vtu);
+
+  /// The key = value lines of @p r for contact.txt and summary.txt.
+  std::string
+  rolling_lines(const RollingNumbers &r);
+} // namespace rollnip
+
+#endif

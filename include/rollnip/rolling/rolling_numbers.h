@@ -1,0 +1,34 @@
+#ifndef rollnip_rolling_rolling_numbers_h
+#define rollnip_rolling_rolling_numbers_h
+
+#include <limits>
+
+namespace rollnip
+{
+  /// What the rolling post-process reports of one nip at Rolling/Surface
+  /// speed (doc/rolling.md), in the engineer's units.
+  struct RollingNumbers
+  {
+    bool   available = false;
+    double speed     = 0; ///< [m/s]
+    /// Rolling resistance F_r = drive power / V [N/mm].
+    double rolling_resistance = 0;
+    /// Drive power = dissipated power = heat made [W per m of face].
+    double power = 0;
+    /// Temperatures: mean on the bond and the surface, largest [degC].
+    double bond_temperature = 0, surface_temperature = 0, max_temperature = 0;
+    /// The heat balance of the temperature solution [W/m].
+    double heat_generated = 0, heat_to_air = 0, heat_to_core = 0;
+    /// V tau / b with the longest time of the cover (<< 1 for the first
+    /// order to hold).
+    double speed_over_nip = 0;
+    /// sum g_i tau_i V P / R_eff [N/mm], the linear first-order result of
+    /// a one-layer cover against a rigid indenter (nan otherwise).
+    double linear_estimate = std::numeric_limits<double>::quiet_NaN();
+    /// Wall times [s]: the loss (sampling the circles, all speeds), the
+    /// temperatures (all speeds).
+    double loss_seconds = 0, heat_seconds = 0;
+  };
+} // namespace rollnip
+
+#endif
