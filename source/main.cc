@@ -9,6 +9,7 @@
 #include <rollnip/engineering_inputs.h>
 #include <rollnip/interrupt.h>
 #include <rollnip/mpi_start.h>
+#include <rollnip/output/report_stream.h>
 #include <rollnip/parameters.h>
 #include <rollnip/run_errors.h>
 
@@ -127,6 +128,9 @@ main(int argc, char **argv)
     face.read(file);
     Parameters::AccuracyTarget accuracy;
     accuracy.read(file);
+    // Quiet: only the report, warnings and errors reach the screen.
+    const QuietRun quiet(parameters.output.verbosity ==
+                         Parameters::Verbosity::quiet);
     if (root)
       std::cout << EngineeringInputs::describe(parameters);
     if (face.enabled && !validate_only)

@@ -23,6 +23,8 @@ namespace rollnip
     double        load_from_traction = 0; ///< P from -sigma_nn on the surface
     double        hertz_load         = 0; ///< Hertz P for the same half-chord
     double        thin_layer_load = 0; ///< thin-layer P for the same half-chord
+    /// Hertz's and the thin layer's half-chords at the same P [mm].
+    double                  hertz_half_chord = 0, thin_layer_half_chord = 0;
     types::global_dof_index n_dofs  = 0; ///< of the nonlinear problem
     unsigned int            n_cells = 0;
     ErrorEstimate           error; ///< of the nonlinear nip's numbers
