@@ -119,8 +119,6 @@ namespace rollnip
         Utilities::MPI::this_mpi_process(nonlinear.roll().communicator()) == 0;
       ConditionalOStream pcout(std::cout, root);
       fill_nip_values(nonlinear, row);
-      if (root)
-        warn_outside_validated_range(row, n, nonlinear.description);
       const double difference =
         row.load_from_traction / row.nonlinear.nip_load - 1;
       pcout << "Nip " << n << ": P from the applied pressure "
@@ -702,7 +700,8 @@ namespace rollnip
   int
   run_nip_study(const Parameters::AllParameters &parameters,
                 const MPI_Comm                   communicator,
-                std::vector<NipRow>             *rows_out)
+                std::vector<NipRow>             *rows_out,
+                const bool                       guard_rails)
   {
     std::vector<NipRow>     rows;
     std::vector<BandWidths> band;
@@ -733,6 +732,9 @@ namespace rollnip
           *scene, control, linear.get(), companion.get(), parameters, rows);
         if (failure.empty() && band_by_scaling(parameters))
           band = solve_band_widths(control, rows, parameters);
+        if (guard_rails && Utilities::MPI::this_mpi_process(communicator) == 0)
+          for (unsigned int n = 0; n < rows.size(); ++n)
+            warn_outside_validated_range(rows[n], n + 1, scene->description);
 
         with_linear = static_cast<bool>(linear);
       }

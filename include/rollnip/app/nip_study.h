@@ -41,12 +41,17 @@ namespace rollnip
    * value, in nip-NN/ below it for a sweep), the nip characteristic with
    * linear theory, Hertz and the thin-layer asymptote beside it, and
    * prints the table, on the processes of @p communicator. Returns the
-   * exit code; the rows, if @p rows_out is given, go there too.
+   * exit code; the rows, if @p rows_out is given, go there too. With
+   * @p guard_rails, nips outside the validated range of the material law
+   * are warned about (warn_outside_validated_range()); a sweep that is
+   * raw material for another model (the face's cross-section law) has
+   * none.
    */
   int
   run_nip_study(const Parameters::AllParameters &parameters,
                 MPI_Comm                         communicator,
-                std::vector<NipRow>             *rows_out = nullptr);
+                std::vector<NipRow>             *rows_out    = nullptr,
+                bool                             guard_rails = true);
 
 } // namespace rollnip
 
