@@ -126,16 +126,38 @@ namespace rollnip
       }
     };
 
-    /// @p value (three decimals) with its estimated error @p error (two
-    /// significant digits; skipped if nan) in a field of @p width
-    /// characters.
+    /// The decimals a number in @p unit is shown with: about the same
+    /// resolution in both systems (0.001 mm or 0.0001 in, 0.001 MPa or
+    /// 0.1 psi).
+    int
+    decimals(const Units::Unit &unit)
+    {
+      return unit.name == "in" ? 4 : unit.name == "psi" ? 1 : 3;
+    }
+
+    /// @p value in @p unit (from the program's) in a field of @p width.
     std::string
-    with_error(const double value, const double error, const int width)
+    field(const double value, const Units::Unit &unit, const int width)
     {
       std::ostringstream s;
-      s << std::fixed << std::setprecision(3) << value;
+      s << std::fixed << std::setprecision(decimals(unit)) << std::setw(width)
+        << unit(value);
+      return s.str();
+    }
+
+    /// @p value in @p unit with its estimated error @p error (two
+    /// significant digits; skipped if nan), both from the program's
+    /// unit, in a field of @p width characters.
+    std::string
+    with_error(const double       value,
+               const double       error,
+               const Units::Unit &unit,
+               const int          width)
+    {
+      std::ostringstream s;
+      s << std::fixed << std::setprecision(decimals(unit)) << unit(value);
       if (!std::isnan(error))
-        s << " +- " << std::defaultfloat << std::setprecision(2) << error;
+        s << " +- " << std::defaultfloat << std::setprecision(2) << unit(error);
       std::ostringstream field;
       field << std::setw(width) << s.str();
       return field.str();
@@ -239,15 +261,15 @@ namespace rollnip
         {
           out << std::fixed << std::setprecision(3) << std::setw(16)
               << r.load * u.load_per_n_per_mm
-              << with_error(u.length(r.width), u.length(r.width_err), 15 + w)
-              << with_error(u.length(r.u0), u.length(r.u0_err), 9 + w)
-              << with_error(u.pressure(r.peak), u.pressure(r.peak_err), 14 + w)
-              << with_error(u.pressure(r.mean), u.pressure(r.mean_err), 14 + w);
+              << with_error(r.width, r.width_err, u.length, 15 + w)
+              << with_error(r.u0, r.u0_err, u.length, 9 + w)
+              << with_error(r.peak, r.peak_err, u.pressure, 14 + w)
+              << with_error(r.mean, r.mean_err, u.pressure, 14 + w);
           if (dwell)
             out << std::setw(12) << r.dwell;
           if (two)
-            out << std::setw(16) << u.length(r.roll_u0) << std::setw(16)
-                << u.length(r.mate_u0);
+            out << field(r.roll_u0, u.length, 16)
+                << field(r.mate_u0, u.length, 16);
           out << std::defaultfloat << std::endl;
         }
     }
@@ -289,14 +311,14 @@ namespace rollnip
       for (const auto &r : rows)
         {
           out << std::fixed << std::setprecision(3) << std::setw(16)
-              << r.load * u.load_per_n_per_mm << std::setw(15)
-              << u.length(r.width) << std::setw(15) << u.length(r.hertz_width)
-              << std::setw(17) << u.pressure(r.hertz_peak) << std::setw(15)
-              << u.length(r.thin_width) << std::setw(16)
-              << u.pressure(r.thin_peak);
+              << r.load * u.load_per_n_per_mm << field(r.width, u.length, 15)
+              << field(r.hertz_width, u.length, 15)
+              << field(r.hertz_peak, u.pressure, 17)
+              << field(r.thin_width, u.length, 15)
+              << field(r.thin_peak, u.pressure, 16);
           if (band)
-            out << std::setw(18) << u.length(r.band.at_high_modulus)
-                << std::setw(17) << u.length(r.band.at_low_modulus);
+            out << field(r.band.at_high_modulus, u.length, 18)
+                << field(r.band.at_low_modulus, u.length, 17);
           out << std::defaultfloat << std::endl;
         }
     }
