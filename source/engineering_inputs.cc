@@ -4,6 +4,7 @@
 #include <rollnip/engineering_inputs.h>
 #include <rollnip/material/hardness.h>
 #include <rollnip/material/material_table.h>
+#include <rollnip/output/units.h>
 #include <rollnip/parameter_entries.h>
 #include <rollnip/scene/scene_description.h>
 
@@ -131,14 +132,14 @@ namespace rollnip
         "Young's modulus E is estimated from it (an estimate: see "
         "doc/engineering_inputs.md) and C1 + C2 = E/6; for a layered cover "
         "one value per layer, from the core out. Allowed: empty (use C1, "
-        "C2) or numbers within the scale's range (Shore A 30 to 90, IRHD "
-        "10 to 95, P&J 12 to 250)");
+        "C2) or numbers within the scale's range (Shore A 20 to 95, Shore D "
+        "30 to 80, IRHD 10 to 95, P&J 5 to 300)");
       prm.declare_entry("Hardness scale",
                         "Shore A",
                         Patterns::Anything(),
-                        "Scale of Hardness. Allowed: Shore A (Gent 1958), "
-                        "IRHD (ISO 48) or P&J (Pusey & Jones, indentation in "
-                        "1/100 mm)");
+                        "Scale of Hardness, any case. Allowed: Shore A (Gent "
+                        "1958), Shore D (log-linear correlation), IRHD (ISO "
+                        "48) or P&J (Pusey & Jones, indentation in 1/100 mm)");
       Parameters::declare_documented(
         prm,
         "C2/C1 ratio",
@@ -150,16 +151,22 @@ namespace rollnip
 
     namespace
     {
-      /// The readings of Material/Hardness, one per layer, each within the
-      /// range of its scale's relation.
+      /// The readings of Material/Hardness, one per layer, each a number
+      /// within the range of its scale's relation; a reading outside the
+      /// range its source validated is warned about (rank 0).
       std::vector<double>
       hardness_readings(const std::string &text, const Hardness::Scale scale)
       {
         const Hardness::Range range = Hardness::validity_range(scale);
+        const Hardness::Range valid = Hardness::validated_range(scale);
         std::vector<double>   readings;
         for (const auto &item : Utilities::split_string_list(text))
           {
             const double value = whole_number(item);
+            AssertThrow(!std::isnan(value),
+                        ExcMessage("Material/Hardness = '" + item +
+                                   "' is not a number (the scale goes in "
+                                   "Material/Hardness scale)"));
             AssertThrow(value >= range.min && value <= range.max,
                         ExcMessage("Material/Hardness = '" + item + "' " +
                                    Hardness::to_string(scale) +
@@ -167,6 +174,15 @@ namespace rollnip
                                    "relation, " +
                                    Parameters::number(range.min) + " to " +
                                    Parameters::number(range.max)));
+            if ((value < valid.min || value > valid.max) &&
+                Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+              std::cerr << "rollnip: warning: Material/Hardness = " << item
+                        << ' ' << Hardness::to_string(scale) << " is outside "
+                        << valid.min << " to " << valid.max << ", where "
+                        << Hardness::source(scale)
+                        << " was validated: the modulus is a rougher "
+                           "estimate (doc/engineering_inputs.md)"
+                        << std::endl;
             readings.push_back(value);
           }
         return readings;
@@ -180,6 +196,8 @@ namespace rollnip
       const auto scale = Hardness::scale_from_string(prm.get("Hardness scale"));
       material.hardness_modulus = 0;
       material.hardness_description.clear();
+      material.surface_hardness = 0;
+      material.hardness_scale   = Hardness::to_string(scale);
       if (text.empty())
         return;
       AssertThrow(at_default(prm, "C1", 0.25) && at_default(prm, "C2", 0.25),
@@ -206,6 +224,7 @@ namespace rollnip
           material.layer_C2.push_back(c.C2);
           // The surface layer's modulus is the one the nip report quotes.
           material.hardness_modulus = E;
+          material.surface_hardness = value;
           readings_text +=
             (readings_text.empty() ? "" : ", ") + Parameters::number(value);
         }
@@ -227,10 +246,10 @@ namespace rollnip
                         "N/mm",
                         Patterns::Anything(),
                         "Unit of the loads in Values (Mode = load) and in "
-                        "the nip report. Allowed: N/mm, kN/m (the same "
-                        "number), pli (pound-force per linear inch, "
-                        "0.17512684 N/mm), or a total force N or kN over the "
-                        "roll's Face length");
+                        "the nip report, any case. Allowed: N/mm, kN/m (the "
+                        "same number), pli (pound-force per linear inch, "
+                        "0.17512684 N/mm), or a total force N, kN or lbf over "
+                        "the roll's Face length");
       declare_optional(prm,
                        "Face length",
                        "Loaded face length of the roll [mm], with Load unit "
@@ -241,9 +260,10 @@ namespace rollnip
         prm,
         "Surface speed",
         "0",
-        Patterns::Double(0.),
-        "Surface speed of the roll [m/min] for the dwell time 2b / v in the "
-        "nip report; 0: not reported");
+        Patterns::Anything(),
+        "Surface speed of the roll for the dwell time 2b / v in the nip "
+        "report; 0: not reported. Allowed: a number >= 0 in m/min, or with "
+        "a unit: m/min, m/s or fpm (e.g. 1969 fpm), any case");
     }
 
     void
@@ -251,7 +271,8 @@ namespace rollnip
     {
       contact.load_unit = LineLoadUnit::from_string(
         prm.get("Load unit"), optional_number(prm, "Contact", "Face length"));
-      contact.surface_speed = prm.get_double("Surface speed");
+      contact.surface_speed =
+        Units::speed_in_m_per_min(prm.get("Surface speed"));
       if (contact.mode == Parameters::ContactMode::load)
         for (double &v : contact.values)
           v *= contact.load_unit.to_n_per_mm;

@@ -10,6 +10,7 @@
 #include <rollnip/engineering_inputs.h>
 #include <rollnip/interrupt.h>
 #include <rollnip/mpi_start.h>
+#include <rollnip/output/report_stream.h>
 #include <rollnip/parameters.h>
 #include <rollnip/rolling/rolling_parameters.h>
 #include <rollnip/run_errors.h>
@@ -135,7 +136,7 @@ main(int argc, char **argv)
     face.read(file);
     Parameters::AccuracyTarget accuracy;
     accuracy.read(file);
-    const auto study_values = Parameters::StudyValues::read(file);
+    const auto          study_values = Parameters::StudyValues::read(file);
     Parameters::Rolling rolling;
     rolling.read(file);
     AssertThrow(!rolling.enabled ||
@@ -144,6 +145,9 @@ main(int argc, char **argv)
                 ExcMessage("Rolling/Enabled works on a nip sweep: not with "
                            "Face/Enabled, Study/Refinement levels or "
                            "Accuracy/Target"));
+    // Quiet: only the report, warnings and errors reach the screen.
+    const QuietRun quiet(parameters.output.verbosity ==
+                         Parameters::Verbosity::quiet);
     if (root)
       std::cout << EngineeringInputs::describe(parameters);
     if (face.enabled && !validate_only)

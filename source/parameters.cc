@@ -7,6 +7,7 @@
 #include <rollnip/face/face_parameters.h>
 #include <rollnip/loading/pressure_load.h>
 #include <rollnip/material/layer_order.h>
+#include <rollnip/output/units.h>
 #include <rollnip/parameter_entries.h>
 #include <rollnip/parameters.h>
 #include <rollnip/rolling/rolling_parameters.h>
@@ -605,6 +606,21 @@ namespace rollnip
                          "true",
                          Patterns::Bool(),
                          "Print the TimerOutput summary at the end");
+      declare_documented(prm,
+                         "Units",
+                         "SI",
+                         Patterns::Anything(),
+                         "Units of the reported numbers (screen, nip report, "
+                         "CSV headers). Allowed: SI (mm, MPa, N/mm or the "
+                         "Contact/Load unit, m/min) or US (in, psi, pli, lbf, "
+                         "fpm), any case");
+      declare_documented(prm,
+                         "Verbosity",
+                         "normal",
+                         Patterns::Anything(),
+                         "What a run prints. Allowed: quiet (only the report, "
+                         "warnings and errors), normal, detailed (also the "
+                         "Newton iterations of every solve), any case");
       prm.leave_subsection();
     }
 
@@ -612,12 +628,21 @@ namespace rollnip
     Output::parse(ParameterHandler &prm)
     {
       prm.enter_subsection("Output");
-      directory      = prm.get("Directory");
-      write_vtu      = prm.get_bool("Write VTU");
-      vtu_every_step = prm.get_bool("VTU every step");
-      write_csv      = prm.get_bool("Write CSV");
-      csv_every_step = prm.get_bool("CSV every step");
-      print_timing   = prm.get_bool("Print timing");
+      directory               = prm.get("Directory");
+      write_vtu               = prm.get_bool("Write VTU");
+      vtu_every_step          = prm.get_bool("VTU every step");
+      write_csv               = prm.get_bool("Write CSV");
+      csv_every_step          = prm.get_bool("CSV every step");
+      print_timing            = prm.get_bool("Print timing");
+      units                   = Units::system_from_string(prm.get("Units"));
+      const std::string level = Units::lower_case(prm.get("Verbosity"));
+      AssertThrow(level == "quiet" || level == "normal" || level == "detailed",
+                  ExcMessage("Output/Verbosity: unknown level '" +
+                             prm.get("Verbosity") +
+                             "' (quiet, normal or detailed)"));
+      verbosity = level == "quiet"    ? Verbosity::quiet
+                  : level == "normal" ? Verbosity::normal
+                                      : Verbosity::detailed;
       prm.leave_subsection();
     }
 
@@ -931,6 +956,12 @@ namespace rollnip
       mating_roll.parse(prm);
       study.parse(prm);
       accuracy.parse(prm);
+      // Detailed output is the Newton solver's own log; quiet prints no
+      // timing table.
+      if (output.verbosity == Verbosity::detailed)
+        nonlinear_solver.verbose = true;
+      if (output.verbosity == Verbosity::quiet)
+        output.print_timing = false;
       if (mating_roll.covered)
         {
           // The rigid indenter's radius would be silently ignored.

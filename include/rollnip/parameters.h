@@ -111,6 +111,11 @@ namespace rollnip
       double hardness_modulus = 0;
       /// The reading and the relation used, e.g. "60 Shore A, Gent (1958)".
       std::string hardness_description;
+      /// The surface layer's hardness reading and its scale's name as in
+      /// Material/Hardness scale (0, empty: none), for the modulus band of
+      /// the published correlations (Hardness::modulus_band).
+      double      surface_hardness = 0;
+      std::string hardness_scale;
 
       static void
       declare(ParameterHandler &prm);
@@ -209,6 +214,23 @@ namespace rollnip
       parse(ParameterHandler &prm);
     };
 
+    /// The units of reported numbers (Output/Units): SI (mm, MPa, N/mm
+    /// or kN/m, m/min) or US customary (in, psi, pli, fpm).
+    enum class UnitSystem
+    {
+      si,
+      us
+    };
+
+    /// How much a run prints (Output/Verbosity): quiet prints only the
+    /// report, warnings and errors; detailed adds the Newton iterations.
+    enum class Verbosity
+    {
+      quiet,
+      normal,
+      detailed
+    };
+
     struct Output
     {
       std::string directory;
@@ -217,6 +239,8 @@ namespace rollnip
       bool        write_csv;
       bool        csv_every_step;
       bool        print_timing;
+      UnitSystem  units     = UnitSystem::si;
+      Verbosity   verbosity = Verbosity::normal;
 
       static void
       declare(ParameterHandler &prm);

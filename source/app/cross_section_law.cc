@@ -234,7 +234,9 @@ namespace rollnip
       const int           code =
         run_nip_study(sweep_parameters(parameters, approaches, sweep_dir),
                       communicator,
-                      &rows);
+                      &rows,
+                      nullptr,
+                      false);
       AssertThrow(code == 0 && rows.size() == approaches.size(),
                   ExcMessage("Face: the cross-section's sweep stopped after " +
                              std::to_string(rows.size()) + " of " +

@@ -9,11 +9,13 @@
 #include <rollnip/contact/nip_estimates.h>
 #include <rollnip/geometry/angles.h>
 #include <rollnip/interrupt.h>
+#include <rollnip/material/hardness.h>
 #include <rollnip/material/material_table.h>
 #include <rollnip/output/atomic_file.h>
 #include <rollnip/output/polyline_vtp.h>
 #include <rollnip/output/silence_cerr.h>
 #include <rollnip/output/sweep_pvd.h>
+#include <rollnip/output/units.h>
 #include <rollnip/rolling/rolling_evaluation.h>
 #include <rollnip/rolling/rolling_parameters.h>
 #include <rollnip/run_errors.h>
@@ -102,8 +104,12 @@ namespace rollnip
       const double b            = row.nonlinear.half_chord;
       row.hertz_load            = NipEstimates::hertz_load(description, b);
       row.thin_layer_load       = NipEstimates::thin_layer_load(description, b);
-      row.n_dofs                = problem.n_dofs();
-      row.n_cells               = problem.n_cells();
+      const double P            = row.nonlinear.nip_load;
+      row.hertz_half_chord = NipEstimates::hertz_half_width(description, P);
+      row.thin_layer_half_chord =
+        NipEstimates::thin_layer_half_width(description, P);
+      row.n_dofs  = problem.n_dofs();
+      row.n_cells = problem.n_cells();
     }
 
     /// fill_nip_values() for nip number @p n of @p nonlinear; prints the
@@ -358,12 +364,15 @@ namespace rollnip
     std::string
     sweep_time_meaning(const Parameters::AllParameters &parameters)
     {
+      const auto system = parameters.output.units;
       switch (parameters.contact.mode)
         {
           case Parameters::ContactMode::load:
-            return "line load P [N/mm]";
+            return "line load P [" +
+                   Units::unit(Units::Quantity::line_load, system).name + "]";
           case Parameters::ContactMode::indentation:
-            return "indentation u0 [mm]";
+            return "indentation u0 [" +
+                   Units::unit(Units::Quantity::length, system).name + "]";
           default:
             return "half nip angle theta0 [deg]";
         }
@@ -374,12 +383,13 @@ namespace rollnip
     sweep_time(const Parameters::AllParameters &parameters,
                const ContactResult             &r)
     {
+      const auto system = parameters.output.units;
       switch (parameters.contact.mode)
         {
           case Parameters::ContactMode::load:
-            return r.nip_load;
+            return Units::unit(Units::Quantity::line_load, system)(r.nip_load);
           case Parameters::ContactMode::indentation:
-            return r.indentation;
+            return Units::unit(Units::Quantity::length, system)(r.indentation);
           default:
             return r.theta0 * degrees_per_radian;
         }
@@ -413,11 +423,11 @@ namespace rollnip
     {
       const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
       ConditionalOStream pcout(std::cout, root);
-      // A linear companion that did not converge has no value to show.
+      // Linear theory off, or a companion that did not converge: nan.
       auto linear_value = [with_linear](const NipRow &r, const double v) {
-        return !with_linear         ? 0.
-               : r.linear.converged ? v
-                                    : std::numeric_limits<double>::quiet_NaN();
+        return with_linear && r.linear.converged
+                 ? v
+                 : std::numeric_limits<double>::quiet_NaN();
       };
       // The nip characteristic.
       pcout << std::endl
@@ -449,7 +459,8 @@ namespace rollnip
                      "P_from_traction_N_per_mm,conformity,penetration,"
                      "P_linear_N_per_mm,u0_linear_mm,peak_pressure_linear_MPa,"
                      "P_hertz_N_per_mm,P_thin_layer_N_per_mm,"
-                     "half_chord_over_cover_thickness";
+                     "half_chord_over_cover_thickness,"
+                     "half_chord_hertz_at_P_mm,half_chord_thin_layer_at_P_mm";
               // The estimated errors, absolute (nan: none).
               for (unsigned int q = 0; q < NipQuantity::n_quantities; ++q)
                 out << ',' << NipQuantity::key(NipQuantity::Index(q)) << "_err_"
@@ -471,7 +482,8 @@ namespace rollnip
                       << linear_value(r, r.linear.indentation) << ','
                       << linear_value(r, r.linear.peak_pressure) << ','
                       << r.hertz_load << ',' << r.thin_layer_load << ','
-                      << r.nonlinear.half_chord / cover_thickness;
+                      << r.nonlinear.half_chord / cover_thickness << ','
+                      << r.hertz_half_chord << ',' << r.thin_layer_half_chord;
                   for (unsigned int q = 0; q < NipQuantity::n_quantities; ++q)
                     out << ','
                         << (r.error.available
@@ -654,6 +666,48 @@ namespace rollnip
       return "";
     }
 
+    /// The nip widths at the ends of the hardness modulus band for each of
+    /// @p rows, by the scaling of BandWidths: the same nip solved by
+    /// @p control at P E / E_low and P E / E_high, silently; nan where a
+    /// solve fails.
+    std::vector<BandWidths>
+    solve_band_widths(NipControl                      &control,
+                      const std::vector<NipRow>       &rows,
+                      const Parameters::AllParameters &parameters)
+    {
+      const Parameters::Material &m = parameters.material;
+      const Hardness::Band        e =
+        Hardness::modulus_band(m.surface_hardness,
+                               Hardness::scale_from_string(m.hardness_scale));
+      const double E        = m.hardness_modulus;
+      auto         width_at = [&](const NipRow &row, const double modulus) {
+        if (modulus == E)
+          return 2 * row.nonlinear.half_chord;
+        ContactResult r;
+        try
+          {
+            SilenceStream quiet(std::cout);
+            r = control.solve(row.nonlinear.nip_load * E / modulus);
+          }
+        catch (const std::exception &error)
+          {
+            if (is_local_error(error))
+              throw;
+          }
+        return r.converged ? 2 * r.half_chord
+                                   : std::numeric_limits<double>::quiet_NaN();
+      };
+      std::vector<BandWidths> band;
+      for (const NipRow &row : rows)
+        {
+          BandWidths w;
+          w.at_low_modulus  = width_at(row, e.low);
+          w.at_high_modulus = width_at(row, e.high);
+          band.push_back(w);
+        }
+      return band;
+    }
+
     /// The nip characteristic and report of @p rows, which also go to
     /// @p rows_out if given; returns the exit code (1, said, if the sweep
     /// stopped for @p failure).
@@ -663,13 +717,14 @@ namespace rollnip
                  const std::string               &failure,
                  const Parameters::AllParameters &parameters,
                  const SceneDescription          &scene,
+                 const std::vector<BandWidths>   &band,
                  std::vector<NipRow>             *rows_out,
                  const MPI_Comm                   communicator)
     {
       const std::string &top = parameters.output.directory;
       write_nip_characteristic(
         rows, with_linear, scene.roll.cover_thickness(), top, communicator);
-      write_nip_report(rows, parameters, scene, top, communicator);
+      write_nip_report(rows, parameters, scene, top, communicator, band);
       if (rows_out)
         *rows_out = rows;
       if (!failure.empty())
@@ -706,11 +761,13 @@ namespace rollnip
   run_nip_study(const Parameters::AllParameters &parameters,
                 const MPI_Comm                   communicator,
                 std::vector<NipRow>             *rows_out,
-                const Parameters::Rolling       *rolling)
+                const Parameters::Rolling       *rolling,
+                const bool                       guard_rails)
   {
-    std::vector<NipRow> rows;
-    std::string         failure;
-    bool                with_linear = false;
+    std::vector<NipRow>     rows;
+    std::vector<BandWidths> band;
+    std::string             failure;
+    bool                    with_linear = false;
     // The linear companion: same scene, linear theory, same theta0.
     Parameters::AllParameters linear_parameters = parameters;
     linear_parameters.material.theory           = Parameters::Theory::linear;
@@ -739,6 +796,11 @@ namespace rollnip
                              parameters,
                              rolling,
                              rows);
+        if (failure.empty() && band_by_scaling(parameters))
+          band = solve_band_widths(control, rows, parameters);
+        if (guard_rails && Utilities::MPI::this_mpi_process(communicator) == 0)
+          for (unsigned int n = 0; n < rows.size(); ++n)
+            warn_outside_validated_range(rows[n], n + 1, scene->description);
 
         with_linear = static_cast<bool>(linear);
       }
@@ -758,6 +820,7 @@ namespace rollnip
                         failure,
                         parameters,
                         scene->description,
+                        band,
                         rows_out,
                         communicator);
   }

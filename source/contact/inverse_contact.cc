@@ -537,7 +537,9 @@ namespace rollnip
           << "indentation_u0_mm = " << result.indentation << '\n'
           << "nip_load_P_N_per_mm = " << result.nip_load << '\n'
           << "peak_pressure_MPa = " << result.peak_pressure << '\n'
-          << "min_pressure_MPa = " << result.min_pressure << '\n'
+          << "# the lowest pressure at a surface node inside the nip (it "
+             "falls to 0 at the nip edge)\n"
+          << "min_pressure_inside_nip_MPa = " << result.min_pressure << '\n'
           << "conformity_max_gap_over_u0 = " << result.conformity << '\n'
           << "penetration_outside_over_u0 = " << result.penetration << '\n';
       if (result.two_rolls)

@@ -66,5 +66,32 @@ namespace rollnip
       return 2 * std::pow(b, 5) /
              (15 * effective_radius(scene) * thin_layer_compliance(scene));
     }
+
+    double
+    hertz_half_width(const SceneDescription &scene, const double P)
+    {
+      return std::sqrt(4 * P * effective_radius(scene) /
+                       (numbers::PI * contact_modulus(scene)));
+    }
+
+    double
+    thin_layer_half_width(const SceneDescription &scene, const double P)
+    {
+      return std::pow(7.5 * P * effective_radius(scene) *
+                        thin_layer_compliance(scene),
+                      0.2);
+    }
+
+    double
+    hertz_peak_pressure(const double P, const double b)
+    {
+      return 2 * P / (numbers::PI * b);
+    }
+
+    double
+    thin_layer_peak_pressure(const double P, const double b)
+    {
+      return 15 * P / (16 * b);
+    }
   } // namespace NipEstimates
 } // namespace rollnip

@@ -44,7 +44,7 @@ pass "inputs, modulus estimate and nip report echoed on the screen"
 dir=output/engineering_nip
 report="$dir/nip_report.csv"
 [ -f "$report" ] || fail "no $report"
-header="nip,line_load_kN_per_m,line_load_N_per_mm,nip_width_2b_mm,indentation_u0_mm,peak_pressure_MPa,mean_pressure_MPa,surface_speed_m_per_min,dwell_time_ms,youngs_modulus_E_MPa,E_estimated_from_hardness,line_load_err_N_per_mm,nip_width_2b_err_mm,indentation_u0_err_mm,peak_pressure_err_MPa,mean_pressure_err_MPa"
+header="nip,line_load_kN_per_m,line_load_N_per_mm,nip_width_2b_mm,indentation_u0_mm,peak_pressure_MPa,mean_pressure_MPa,surface_speed_m_per_min,dwell_time_ms,youngs_modulus_E_MPa,E_estimated_from_hardness,line_load_err_N_per_mm,nip_width_2b_err_mm,indentation_u0_err_mm,peak_pressure_err_MPa,mean_pressure_err_MPa,nip_width_2b_hertz_mm,peak_pressure_hertz_MPa,nip_width_2b_thin_layer_mm,peak_pressure_thin_layer_MPa,youngs_modulus_E_band_low_MPa,youngs_modulus_E_band_high_MPa,nip_width_2b_at_E_band_low_mm,nip_width_2b_at_E_band_high_mm"
 [ "$(head -n 1 "$report")" = "$header" ] || fail "unexpected header: $(head -n 1 "$report")"
 [ "$(($(wc -l < "$report") - 1))" -eq 3 ] || fail "expected 3 rows"
 pass "header with units, 3 rows"

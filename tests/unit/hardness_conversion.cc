@@ -15,6 +15,16 @@
 //  - The Mooney-Rivlin split (C1 + C2 = E/6, C2 = ratio C1), the pli
 //    factor, the validity ranges giving rubber-like shear moduli, and the
 //    refusal of an unknown scale or load unit.
+//  - The cited formulas' values, computed independently from the printed
+//    formulas (1e-6): Gent at 60 and 70 Shore A (3.605073, 5.520507 MPa),
+//    the log-linear correlation log10 E = 0.0235 S - 0.6403 at 70 Shore A
+//    (10.10881 MPa) and at 40 Shore D = 90 Shore A equivalent
+//    (29.83321 MPa), the ISO 48 IRHD relation at 70 (5.383036 MPa).
+//  - The modulus band at 70 Shore A runs from the IRHD relation's
+//    5.383 MPa to the log-linear 10.109 MPa (a factor 1.88: the published
+//    correlations differ by about 2 there) and holds Gent's value; at
+//    60 Shore A from 3.478 to 5.884 MPa.
+//  - Scale and unit names in any case; Shore D is a scale.
 
 #include <deal.II/base/exceptions.h>
 
@@ -24,6 +34,9 @@
 #include "test_tools.h"
 
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 using namespace rollnip;
 
@@ -119,6 +132,7 @@ main()
                 "P&J: a higher reading is a softer cover");
 
   for (const auto scale : {Hardness::Scale::shore_a,
+                           Hardness::Scale::shore_d,
                            Hardness::Scale::irhd,
                            Hardness::Scale::pusey_jones})
     {
@@ -150,8 +164,66 @@ main()
       LineLoadUnit::from_string("kN/m").to_n_per_mm == 1. &&
       LineLoadUnit::from_string("pli").to_n_per_mm == pli_in_n_per_mm,
     "1 pli = " + testing::num(pli_in_n_per_mm) + " N/mm, 1 kN/m = 1 N/mm");
-  checker.check(throws([] { LineLoadUnit::from_string("lbf/in"); }) &&
-                  throws([] { Hardness::scale_from_string("Shore D"); }),
+  checker.check(throws([] { LineLoadUnit::from_string("lbf/ft"); }) &&
+                  throws([] { Hardness::scale_from_string("Asker C"); }),
                 "an unknown load unit or hardness scale is refused");
+  checker.check(
+    LineLoadUnit::from_string("PLI").name == "pli" &&
+      LineLoadUnit::from_string("lbf/in").name == "pli" &&
+      LineLoadUnit::from_string("kn/M").name == "kN/m" &&
+      Hardness::scale_from_string("shore d") == Hardness::Scale::shore_d &&
+      Hardness::scale_from_string("SHOREA") == Hardness::Scale::shore_a &&
+      Hardness::scale_from_string("p&j") == Hardness::Scale::pusey_jones,
+    "unit and scale names are read in any case (PLI, lbf/in, "
+    "kn/M, shore d, SHOREA, p&j)");
+  const double lbf   = 4.4482216152605;
+  const auto   total = LineLoadUnit::from_string("LBF", 1000.);
+  checker.check(total.is_total_force() &&
+                  std::abs(total.to_n_per_mm - lbf / 1000.) < 1e-15,
+                "a total force in lbf over 1000 mm: " +
+                  testing::num(total.to_n_per_mm) + " N/mm per lbf");
+
+  // The cited formulas' values (computed from the printed formulas).
+  const std::vector<std::pair<std::string, std::pair<double, double>>> cited = {
+    {"Gent, 60 Shore A",
+     {Hardness::youngs_modulus_from_shore_a(60), 3.605072697}},
+    {"Gent, 70 Shore A",
+     {Hardness::youngs_modulus_from_shore_a(70), 5.520506782}},
+    {"log-linear, 70 Shore A",
+     {Hardness::youngs_modulus_log_linear(70), 10.10880921}},
+    {"log-linear, 40 Shore D",
+     {Hardness::youngs_modulus(40, Hardness::Scale::shore_d), 29.83321102}},
+    {"ISO 48, 70 IRHD", {Hardness::youngs_modulus_from_irhd(70), 5.38303566}}};
+  for (const auto &[what, values] : cited)
+    checker.check(std::abs(values.first / values.second - 1) < 1e-6,
+                  what + ": E = " + testing::num(values.first) +
+                    " MPa (the formula: " + testing::num(values.second) + ")");
+
+  const auto b70 = Hardness::modulus_band(70, Hardness::Scale::shore_a);
+  checker.check(std::abs(b70.low / 5.38303566 - 1) < 1e-6 &&
+                  std::abs(b70.high / 10.10880921 - 1) < 1e-6 &&
+                  b70.low < 5.520506782 && 5.520506782 < b70.high,
+                "the modulus band at 70 Shore A: " + testing::num(b70.low) +
+                  " to " + testing::num(b70.high) +
+                  " MPa (ISO 48 IRHD to log-linear), Gent's 5.5205 inside");
+  const auto b60 = Hardness::modulus_band(60, Hardness::Scale::shore_a);
+  checker.check(std::abs(b60.low / 3.477901818 - 1) < 1e-6 &&
+                  std::abs(b60.high / 5.884370370 - 1) < 1e-6,
+                "the modulus band at 60 Shore A: " + testing::num(b60.low) +
+                  " to " + testing::num(b60.high) + " MPa");
+  // P&J: the band is taken at the Shore A reading Gent gives for its E.
+  const double E_pj = Hardness::youngs_modulus_from_pusey_jones(100);
+  const auto   b_pj = Hardness::modulus_band(100, Hardness::Scale::pusey_jones);
+  const auto b_eq = Hardness::modulus_band(Hardness::shore_a_from_modulus(E_pj),
+                                           Hardness::Scale::shore_a);
+  checker.check(b_pj.low <= E_pj && E_pj <= b_pj.high &&
+                  std::abs(b_pj.high / b_eq.high - 1) < 1e-9 &&
+                  std::abs(Hardness::youngs_modulus_from_shore_a(
+                             Hardness::shore_a_from_modulus(E_pj)) /
+                             E_pj -
+                           1) < 1e-9,
+                "100 P&J: E = " + testing::num(E_pj) + " MPa in its band " +
+                  testing::num(b_pj.low) + " to " + testing::num(b_pj.high) +
+                  " MPa, that of its Gent Shore A equivalent");
   return checker.result();
 }

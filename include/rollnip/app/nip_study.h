@@ -29,6 +29,8 @@ namespace rollnip
     double        load_from_traction = 0; ///< P from -sigma_nn on the surface
     double        hertz_load         = 0; ///< Hertz P for the same half-chord
     double        thin_layer_load = 0; ///< thin-layer P for the same half-chord
+    /// Hertz's and the thin layer's half-chords at the same P [mm].
+    double                  hertz_half_chord = 0, thin_layer_half_chord = 0;
     types::global_dof_index n_dofs  = 0; ///< of the nonlinear problem
     unsigned int            n_cells = 0;
     ErrorEstimate           error;   ///< of the nonlinear nip's numbers
@@ -48,13 +50,17 @@ namespace rollnip
    * prints the table, on the processes of @p communicator. With
    * @p rolling enabled, each nip also gets its rolling loss and cover
    * temperature (doc/rolling.md). Returns the exit code; the rows, if
-   * @p rows_out is given, go there too.
+   * @p rows_out is given, go there too. With @p guard_rails, nips outside
+   * the validated range of the material law are warned about
+   * (warn_outside_validated_range()); a sweep that is raw material for
+   * another model (the face's cross-section law) has none.
    */
   int
   run_nip_study(const Parameters::AllParameters &parameters,
                 MPI_Comm                         communicator,
-                std::vector<NipRow>             *rows_out = nullptr,
-                const Parameters::Rolling       *rolling  = nullptr);
+                std::vector<NipRow>             *rows_out    = nullptr,
+                const Parameters::Rolling       *rolling     = nullptr,
+                bool                             guard_rails = true);
 
 } // namespace rollnip
 

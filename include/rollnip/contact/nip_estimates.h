@@ -40,6 +40,24 @@ namespace rollnip
     /// P of the thin layer(s) for the contact half-width @p b [N/mm].
     double
     thin_layer_load(const SceneDescription &scene, const double b);
+
+    /// The half-width b [mm] Hertz gives at the line load @p P [N/mm]:
+    /// the inverse of hertz_load(), b = sqrt(4 P R / (pi E*)).
+    double
+    hertz_half_width(const SceneDescription &scene, double P);
+
+    /// The thin layer's half-width b [mm] at @p P: the inverse of
+    /// thin_layer_load().
+    double
+    thin_layer_half_width(const SceneDescription &scene, double P);
+
+    /// Peak pressures [MPa] at the line load @p P over the half-width
+    /// @p b: Hertz's elliptic profile, 2 P / (pi b), and the thin layer's
+    /// (b^2 - x^2)^2 profile, 15 P / (16 b).
+    double
+    hertz_peak_pressure(double P, double b);
+    double
+    thin_layer_peak_pressure(double P, double b);
   } // namespace NipEstimates
 } // namespace rollnip
 
