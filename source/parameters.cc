@@ -4,6 +4,7 @@
 #include <rollnip/cost_estimate.h>
 #include <rollnip/engineering_inputs.h>
 #include <rollnip/face/face_parameters.h>
+#include <rollnip/ignored_entries.h>
 #include <rollnip/loading/pressure_load.h>
 #include <rollnip/parameter_entries.h>
 #include <rollnip/parameters.h>
@@ -955,9 +956,11 @@ namespace rollnip
       }
       ParameterHandler prm;
       declare(prm);
+      const ChangedEntries changed(prm);
       prm.parse_input(filename);
       parse(prm);
       validate();
+      warn_ignored_entries(*this, changed);
     }
 
     void
