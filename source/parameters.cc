@@ -1053,6 +1053,7 @@ namespace rollnip
     void
     AllParameters::validate_contact() const
     {
+      validate_targets(*this);
       const double R0 = geometry.outer_radius;
       if (contact.mode != ContactMode::none)
         {

@@ -8,6 +8,7 @@
 #include <rollnip/parameter_entries.h>
 #include <rollnip/scene/scene_validation.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -220,6 +221,81 @@ namespace rollnip
                            "Geometry/Outer radius - Inner "
                            "radius = " +
                            Parameters::number(h) + " mm thick"));
+  }
+
+  namespace
+  {
+    /// The largest shear modulus [MPa] of the layers of both covers.
+    double
+    stiffest_layer(const Parameters::AllParameters &p)
+    {
+      double     G   = 0;
+      const auto add = [&G](const Parameters::Material &m) {
+        for (unsigned int j = 0; j < m.n_layers(); ++j)
+          G = std::max(G, 2 * (m.layer_C1[j] + m.layer_C2[j]));
+      };
+      add(p.material);
+      if (p.mating_roll.covered)
+        add(p.mating_roll.material);
+      return G;
+    }
+
+    /// How the user gave the line load @p P [N/mm]: "Contact/Values = 2 kN
+    /// over Contact/Face length = 1e-300 mm is a line load of 2e+303
+    /// N/mm", or "Contact/Values = 5 N/mm".
+    std::string
+    given_as(const Parameters::Contact &c, const double P)
+    {
+      const LineLoadUnit &u = c.load_unit;
+      const std::string   typed =
+        "Contact/Values = " + Parameters::number(P / u.to_n_per_mm) + " " +
+        u.name;
+      if (u.is_total_force())
+        return typed + " over Contact/Face length = " +
+               Parameters::number(u.face_length) + " mm is a line load of " +
+               Parameters::number(P) + " N/mm";
+      if (u.name != "N/mm")
+        return typed + " (" + Parameters::number(P) + " N/mm)";
+      return typed;
+    }
+  } // namespace
+
+  void
+  validate_targets(const Parameters::AllParameters &p)
+  {
+    const auto &c = p.contact;
+    if (c.mode == Parameters::ContactMode::load)
+      {
+        const double R0    = p.geometry.outer_radius;
+        const double G     = stiffest_layer(p);
+        const double limit = max_load_over_G_R0 * G * R0;
+        for (const double P : c.values)
+          AssertThrow(std::isfinite(P) && P <= limit,
+                      ExcMessage(
+                        given_as(c, P) + (std::isfinite(P) ? "," : "") +
+                        " more than " + Parameters::number(max_load_over_G_R0) +
+                        " G R0 = " + Parameters::number(limit) +
+                        " N/mm (G = " + Parameters::number(G) +
+                        " MPa, the stiffest layer's, R0 = " +
+                        Parameters::number(R0) +
+                        " mm): no cover carries it (a unit mistake?)"));
+      }
+    if (c.mode == Parameters::ContactMode::indentation)
+      {
+        double h = p.geometry.outer_radius - p.geometry.inner_radius;
+        if (p.mating_roll.covered)
+          h += p.mating_roll.geometry.outer_radius -
+               p.mating_roll.geometry.inner_radius;
+        for (const double u0 : c.values)
+          AssertThrow(u0 < h,
+                      ExcMessage("Contact/Values = " + Parameters::number(u0) +
+                                 " mm: the indentation reaches through the "
+                                 "cover" +
+                                 (p.mating_roll.covered ? "s (" : " (") +
+                                 Parameters::number(h) +
+                                 " mm thick): the core would touch the "
+                                 "mating surface"));
+      }
   }
 
   double

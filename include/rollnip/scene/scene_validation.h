@@ -43,6 +43,23 @@ namespace rollnip
                 const std::string               &prefix,
                 const NipReach                  &nips);
 
+  /// The largest line load [N/mm] taken as a target, over the largest
+  /// shear modulus G of the covers times the roll's outer radius R0: far
+  /// beyond what a cover carries (P / (G R0) is below 1 at a nip of half
+  /// a right angle on the default scene).
+  constexpr double max_load_over_G_R0 = 1000;
+
+  /**
+   * The targets of Contact/Values as the program uses them, whether typed
+   * or derived (a total force over Contact/Face length, a line load in
+   * kN/m or pli): finite line loads up to max_load_over_G_R0 G R0 under
+   * load control, indentations below the covers' thickness (the approach
+   * at which the core would touch the mate) under indentation control.
+   * The message names what the value came from.
+   */
+  void
+  validate_targets(const Parameters::AllParameters &parameters);
+
   /// Both rolls of @p parameters with validate_roll(), then the size of
   /// the whole scene (check_cost()) and a warning for a roll whose size
   /// suggests lengths typed in another unit than mm.
