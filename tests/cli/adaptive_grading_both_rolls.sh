@@ -14,10 +14,9 @@
 # pass 1" line for each roll; the mating roll's first coarse cell after
 # grading is narrower than half its contact zone (asin(b / R_mate), b the
 # half-chord of nip_characteristic.csv) and differs from the ungraded
-# 1.46 deg; the
-# real run used those cells: the first surface node of the mating roll
-# off the line of centres (mating_roll/outer_surface.csv) lies at the
-# printed width; both rolls carry the same P within 1e-3.
+# 1.46 deg; the real run used those cells: the first surface node of the
+# mating roll off the line of centres (mating_roll/outer_surface.csv) lies
+# at the printed width; both rolls carry the same P within 1e-3.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
