@@ -289,7 +289,8 @@ namespace rollnip
     }
 
     void
-    check_modulus(const Parameters::Material &material)
+    check_modulus(const Parameters::Material &material,
+                  const std::string          &prefix)
     {
       // The layer furthest outside the range of rubbers.
       const MaterialTable layers(material);
@@ -303,9 +304,8 @@ namespace rollnip
       if (G >= 0.01 && G <= 100.)
         return;
       if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-        std::cerr << "rollnip: warning: Material/C1 + C2: the shear modulus "
-                     "2 (C1 + C2) = "
-                  << G
+        std::cerr << "rollnip: warning: " << prefix
+                  << "Material/C1 + C2: the shear modulus 2 (C1 + C2) = " << G
                   << " MPa is outside 0.01 to 100 MPa, the range of rubbers "
                      "(a unit mistake? C1 and C2 are in MPa)"
                   << std::endl;

@@ -5,6 +5,7 @@
 #include <rollnip/cost_estimate.h>
 #include <rollnip/engineering_inputs.h>
 #include <rollnip/face/face_parameters.h>
+#include <rollnip/ignored_entries.h>
 #include <rollnip/loading/pressure_load.h>
 #include <rollnip/material/layer_order.h>
 #include <rollnip/output/units.h>
@@ -12,6 +13,7 @@
 #include <rollnip/parameters.h>
 #include <rollnip/rolling/rolling_parameters.h>
 #include <rollnip/run_errors.h>
+#include <rollnip/scene/scene_validation.h>
 
 #include <filesystem>
 #include <fstream>
@@ -69,6 +71,29 @@ namespace rollnip
       std::ostringstream s;
       s << x;
       return s.str();
+    }
+
+    std::string
+    with_entry_prefix(const std::string &message, const std::string &prefix)
+    {
+      std::string out;
+      for (std::size_t i = 0; i < message.size();)
+        {
+          bool named = false;
+          // An entry of a roll's subsection, at a word's start: "Geometry/",
+          // "Geometry:" (and Material, Mesh), not already under another.
+          if (i == 0 || message[i - 1] == ' ' || message[i - 1] == '(')
+            for (const std::string section : {"Geometry", "Material", "Mesh"})
+              if (message.compare(i, section.size(), section) == 0 &&
+                  i + section.size() < message.size() &&
+                  (message[i + section.size()] == '/' ||
+                   message[i + section.size()] == ':'))
+                named = true;
+          if (named)
+            out += prefix;
+          out += message[i++];
+        }
+      return out;
     }
 
     std::string
@@ -796,9 +821,20 @@ namespace rollnip
       prm.enter_subsection("Mating roll");
       covered        = prm.get("Type") == "covered roll";
       max_iterations = prm.get_integer("Maximum iterations");
-      geometry.parse(prm);
-      material.parse(prm);
-      mesh.parse(prm);
+      // The same code reads both rolls' entries: its messages name them
+      // from the subsection, here under "Mating roll/".
+      try
+        {
+          geometry.parse(prm);
+          material.parse(prm);
+          mesh.parse(prm);
+        }
+      catch (const ExceptionBase &e)
+        {
+          AssertThrow(false,
+                      ExcMessage(with_entry_prefix(one_line_message(e),
+                                                   "Mating roll/")));
+        }
       prm.leave_subsection();
     }
 
@@ -815,6 +851,8 @@ namespace rollnip
       mate.contact.compare_linear = false;
       mate.output.directory       = output.directory + "/mating_roll";
       mate.output.print_timing    = false;
+      // A study refines the first roll only.
+      mate.study.levels.clear();
       return mate;
     }
 
@@ -992,15 +1030,19 @@ namespace rollnip
       }
       ParameterHandler prm;
       declare(prm);
+      const ChangedEntries changed(prm);
       prm.parse_input(filename);
       parse(prm);
       LayerOrder::apply(prm, *this);
       validate();
+      warn_ignored_entries(*this, changed);
     }
 
     void
     AllParameters::validate() const
     {
+      // Each roll first: the scene's checks below take its geometry as read.
+      validate_rolls(*this);
       validate_scene();
       validate_contact();
       validate_mesh();
@@ -1011,55 +1053,22 @@ namespace rollnip
     void
     AllParameters::validate_mating_roll() const
     {
+      // Its own entries are checked by validate_rolls(), by the first
+      // roll's code; here what concerns the scene.
       if (!mating_roll.covered)
         return;
       AssertThrow(contact.mode != ContactMode::none,
                   ExcMessage("Mating roll/Type = covered roll needs a contact "
                              "scene (Contact/Mode)"));
-      // Its entries are checked as a roll's, and named as its.
-      try
-        {
-          const AllParameters mate = mating_roll_parameters();
-          mate.validate_scene();
-          mate.validate_mesh();
-        }
-      catch (const ExceptionBase &e)
-        {
-          AssertThrow(false, ExcMessage("Mating roll/" + one_line_message(e)));
-        }
     }
 
     void
     AllParameters::validate_scene() const
     {
-      const double R1 = geometry.inner_radius;
-      const double R0 = geometry.outer_radius;
-      AssertThrow(mesh.adaptive_passes == 0 ||
-                    mesh.source == MeshSource::builtin,
-                  ExcMessage("Mesh/Adaptive grading passes needs Mesh/Source "
-                             "= builtin (it re-cuts the builtin mesh)"));
       AssertThrow(study.sector_angles.empty() ||
                     mesh.source == MeshSource::builtin,
                   ExcMessage("Study/Sector angles needs Mesh/Source = builtin "
                              "(a gmsh mesh has its own sector)"));
-      AssertThrow(R1 > 0,
-                  ExcMessage("Geometry/Inner radius must be positive, got " +
-                             std::to_string(R1) + " mm"));
-      AssertThrow(R1 < R0,
-                  ExcMessage(
-                    "Geometry/Inner radius (" + std::to_string(R1) +
-                    " mm) must be smaller than Geometry/Outer radius (" +
-                    std::to_string(R0) + " mm)"));
-      AssertThrow(geometry.sector_angle > 0 &&
-                    geometry.sector_angle <= numbers::PI * (1 + 1e-12),
-                  ExcMessage("Geometry/Sector angle must lie in (0, 180] deg, "
-                             "got " +
-                             number(geometry.sector_angle / degree) + " deg"));
-      validate_material();
-      AssertThrow(mesh.source == MeshSource::builtin || !mesh.mesh_file.empty(),
-                  ExcMessage("Mesh/Mesh file must name a gmsh file when "
-                             "Mesh/Source = gmsh"));
-      EngineeringInputs::check_modulus(material);
       // The load expression must parse and be finite on the whole arc.
       PressureLoad check(load, geometry);
       check.check_finite();
@@ -1082,6 +1091,7 @@ namespace rollnip
     void
     AllParameters::validate_contact() const
     {
+      validate_targets(*this);
       const double R0 = geometry.outer_radius;
       if (contact.mode != ContactMode::none)
         {
@@ -1114,105 +1124,19 @@ namespace rollnip
     void
     AllParameters::validate_material() const
     {
-      const auto        &m = material;
-      const unsigned int n = m.n_layers();
-      AssertThrow(m.layer_C2.size() == n,
-                  ExcMessage("Material/C2 has " +
-                             std::to_string(m.layer_C2.size()) +
-                             " value(s) but Material/C1 has " +
-                             std::to_string(n) + ": give one per layer"));
-      AssertThrow(m.layer_thicknesses.empty() ||
-                    m.layer_thicknesses.size() == n,
-                  ExcMessage("Material/Layer thicknesses has " +
-                             std::to_string(m.layer_thicknesses.size()) +
-                             " value(s) but Material/C1 has " +
-                             std::to_string(n) + ": give one per layer"));
-      AssertThrow(n == 1 || !m.layer_thicknesses.empty(),
-                  ExcMessage("Material/C1 has " + std::to_string(n) +
-                             " values (layers) but Material/Layer "
-                             "thicknesses is empty: give the thickness of "
-                             "every layer [mm]"));
-      const std::string which = n == 1 ? "" : " of layer ";
-      for (unsigned int j = 0; j < n; ++j)
-        {
-          const double      C1 = m.layer_C1[j], C2 = m.layer_C2[j];
-          const std::string layer = n == 1 ? "" : which + std::to_string(j + 1);
-          const std::string got   = ", got C1 = " + std::to_string(C1) +
-                                  " MPa, C2 = " + std::to_string(C2) + " MPa";
-          AssertThrow(C1 + C2 > 0,
-                      ExcMessage("Material/C1 + C2" + layer +
-                                 " must be positive (shear modulus 2 (C1 + "
-                                 "C2))" +
-                                 got));
-          AssertThrow(C1 >= 0 && C2 >= 0,
-                      ExcMessage("Material/C1 and C2" + layer +
-                                 " must not be negative (Mooney-Rivlin "
-                                 "stability)" +
-                                 got));
-          const double G = 2 * (C1 + C2);
-          AssertThrow(G >= 1e-6 && G <= 1e9,
-                      ExcMessage(
-                        "Material/C1 + C2" + layer +
-                        ": the shear modulus 2 (C1 + C2) = " + number(G) +
-                        " MPa is outside 1e-6 to 1e9 MPa (a unit "
-                        "mistake? C1 and C2 are in MPa)"));
-        }
-      if (m.layer_thicknesses.empty())
-        return;
-      const double h   = geometry.outer_radius - geometry.inner_radius;
-      double       sum = 0;
-      for (const double t : m.layer_thicknesses)
-        {
-          AssertThrow(t > 0,
-                      ExcMessage("Material/Layer thicknesses must be "
-                                 "positive, got " +
-                                 number(t) + " mm"));
-          sum += t;
-        }
-      AssertThrow(std::abs(sum - h) <= 1e-9 * h,
-                  ExcMessage("Material/Layer thicknesses sum to " +
-                             number(sum) +
-                             " mm, but the cover is Outer "
-                             "radius - Inner radius = " +
-                             number(h) + " mm thick"));
+      // One code for both rolls (scene/scene_validation.h).
+      validate_cover(material, geometry, "");
     }
 
     void
     AllParameters::validate_mesh() const
     {
-      if (mesh.nip_fitting == NipFitting::on)
-        {
-          AssertThrow(mesh.source == MeshSource::builtin,
-                      ExcMessage("Mesh/Nip fitting = on needs Mesh/Source = "
-                                 "builtin (a gmsh mesh cannot be re-fitted)"));
-          AssertThrow(contact.mode != ContactMode::none,
-                      ExcMessage("Mesh/Nip fitting = on needs a contact "
-                                 "scene (Contact/Mode): there is no nip "
-                                 "to fit otherwise"));
-          AssertThrow(mesh.adaptive_passes == 0,
-                      ExcMessage("Mesh/Nip fitting = on and Mesh/Adaptive "
-                                 "grading passes both move the cells: "
-                                 "choose one"));
-        }
-      if (nip_fitted_mesh())
-        {
-          AssertThrow(mesh.nip_cells + 2 <= mesh.circumferential_cells,
-                      ExcMessage(
-                        "Mesh/Nip cells (" + std::to_string(mesh.nip_cells) +
-                        ") must leave at least 2 of Mesh/Circumferential "
-                        "cells (" +
-                        std::to_string(mesh.circumferential_cells) +
-                        ") beyond the contact zone"));
-          if (contact.mode == ContactMode::nip_angle)
-            for (const double v : contact.values)
-              AssertThrow(
-                v <= 0.5 * geometry.sector_angle * (1 + 1e-12),
-                ExcMessage(
-                  "Contact/Values: the nip-fitted mesh takes "
-                  "theta0 up to half of Geometry/Sector angle (" +
-                  std::to_string(0.5 * geometry.sector_angle / degree) +
-                  " deg), got " + std::to_string(v / degree) + " deg"));
-        }
+      // The mesh entries of each roll are checked by validate_rolls().
+      AssertThrow(mesh.nip_fitting != NipFitting::on ||
+                    contact.mode != ContactMode::none,
+                  ExcMessage("Mesh/Nip fitting = on needs a contact "
+                             "scene (Contact/Mode): there is no nip "
+                             "to fit otherwise"));
     }
 
     void
@@ -1226,9 +1150,6 @@ namespace rollnip
                              " values; one run takes at most " +
                              std::to_string(max_nips_per_run) +
                              " (each is at least one full contact solve)"));
-      if (mesh.source == MeshSource::builtin)
-        check_cost(*this,
-                   double(mesh.radial_cells) * mesh.circumferential_cells);
       AssertThrow(!std::filesystem::exists(output.directory) ||
                     std::filesystem::is_directory(output.directory),
                   ExcMessage("Output/Directory '" + output.directory +

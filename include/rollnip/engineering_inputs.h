@@ -39,9 +39,11 @@ namespace rollnip
 
     /// The shear modulus G = 2 (C1 + C2) [MPa] and whether it lies in the
     /// range of rubbers, 0.01 to 100 MPa (warns otherwise, on rank 0:
-    /// likely a unit mistake, but the tests scale the modulus on purpose).
+    /// likely a unit mistake, but the tests scale the modulus on purpose);
+    /// the entries are named with @p prefix ("" or "Mating roll/").
     void
-    check_modulus(const Parameters::Material &material);
+    check_modulus(const Parameters::Material &material,
+                  const std::string          &prefix);
 
     /// The inputs that were converted, one line each ("" if none), for the
     /// screen at the start of a run.

@@ -28,6 +28,12 @@ namespace rollnip
     /// digits).
     std::string
     number(const double x);
+
+    /// @p message with every entry of a roll's subsection it names
+    /// ("Geometry/Cover thickness", "Material:") put under @p prefix
+    /// ("Mating roll/"): for messages of the code that reads both rolls.
+    std::string
+    with_entry_prefix(const std::string &message, const std::string &prefix);
   } // namespace Parameters
 } // namespace rollnip
 

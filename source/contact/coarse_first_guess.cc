@@ -80,7 +80,11 @@ namespace rollnip
             guess.slope = control.local_slope(target);
           }
         else
-          guess.failure = r.message;
+          {
+            guess.failure               = r.message;
+            guess.largest_reached       = control.largest_converged();
+            guess.largest_reached_theta = control.largest_converged_theta();
+          }
       }
     catch (const std::exception &e)
       {

@@ -12,12 +12,19 @@
 #include <iomanip>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 namespace rollnip
 {
   namespace
   {
     constexpr double deg = 180. / numbers::PI;
+
+    /// A cold target more than this far above the largest q the level-0
+    /// scene reached before it failed is out of reach on any mesh: the
+    /// levels differ in q(theta0) by a few per cent, and in the load a
+    /// cover carries before it would invert by about as much.
+    constexpr double coarse_reach_fraction = 0.5;
 
   } // namespace
 
@@ -77,6 +84,20 @@ namespace rollnip
               << " coarse contact solves, " << std::setprecision(3) << c.seconds
               << " s)" << std::endl;
         return c.theta;
+      }
+    if (c.largest_reached > 0 &&
+        c.largest_reached < coarse_reach_fraction * target)
+      {
+        // The level-0 nip differs from this mesh's by its discretisation
+        // error, a few per cent: the solves that would find the same limit
+        // here fail slowly, each after many load-step cutbacks.
+        std::ostringstream s;
+        s << std::setprecision(6) << "on mesh level 0 the largest "
+          << quantity() << " reached is " << c.largest_reached << unit()
+          << " at theta0 = " << c.largest_reached_theta * deg
+          << " deg before the search stopped, less than "
+          << coarse_reach_fraction * 100 << " % of the target";
+        coarse_refusal = s.str();
       }
     pcout << "No first guess from mesh level 0 (" << c.failure
           << "): starting from Hertz and the thin layer" << std::endl;
@@ -186,6 +207,43 @@ namespace rollnip
     return std::min(next, upper);
   }
 
+  bool
+  NipControl::beyond_steepest_rise(const double target,
+                                   const double failed) const
+  {
+    // q rises like theta0^2 (Hertz) to theta0^5 (thin layer); the
+    // secant's largest slope bounds what lies between the last converged
+    // nip and the failed theta0.
+    const double below = converged_below(failed);
+    for (const auto &p : converged)
+      if (p.theta == below)
+        return p.q * std::pow(failed / below, IterationControls::max_slope) <
+               target;
+    return false;
+  }
+
+  double
+  NipControl::largest_converged() const
+  {
+    double q = 0;
+    for (const auto &p : converged)
+      q = std::max(q, p.q);
+    return q;
+  }
+
+  double
+  NipControl::largest_converged_theta() const
+  {
+    double q = 0, theta = 0;
+    for (const auto &p : converged)
+      if (p.q > q)
+        {
+          q     = p.q;
+          theta = p.theta;
+        }
+    return theta;
+  }
+
   std::string
   NipControl::quantity() const
   {
@@ -278,6 +336,8 @@ namespace rollnip
     theta                   = std::min(theta, theta_max);
     double        failed_at = std::numeric_limits<double>::max();
     ContactResult r;
+    if (!coarse_refusal.empty())
+      return refuse(r, target, std::exchange(coarse_refusal, std::string()));
     for (unsigned int it = 1; it <= c.max_iterations; ++it)
       {
         if (it > 1 && interrupt_requested(comm))
@@ -298,6 +358,16 @@ namespace rollnip
                             "the contact iteration fails for every theta0 "
                             "just above the largest converged one (" +
                               r.message + ")");
+            if (beyond_steepest_rise(target, theta))
+              {
+                std::ostringstream why;
+                why << std::setprecision(6)
+                    << "the contact iteration fails at theta0 = " << theta * deg
+                    << " deg, and below it even the steepest "
+                    << "rise of " << quantity() << " with theta0 falls short ("
+                    << r.message << ")";
+                return refuse(r, target, why.str());
+              }
             pcout << "Outer iteration " << it << ": theta0 = " << std::fixed
                   << std::setprecision(6) << theta * deg << " deg failed ("
                   << r.message << "); stepping back" << std::endl;

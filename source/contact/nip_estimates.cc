@@ -1,6 +1,7 @@
 #include <deal.II/base/numbers.h>
 
 #include <rollnip/contact/nip_estimates.h>
+#include <rollnip/solvers/iteration_controls.h>
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +16,13 @@ namespace rollnip
       const double R0 = scene.roll.outer_radius();
       const double Rb = scene.counter_radius();
       return std::isfinite(Rb) ? 1. / (1. / R0 + 1. / Rb) : R0;
+    }
+
+    double
+    mate_nip_angle(const double R0, const double Rm, const double theta0)
+    {
+      return std::asin(
+        std::min(IterationControls::max_mate_sine, R0 * std::sin(theta0) / Rm));
     }
 
     double

@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <rollnip/contact/nip_estimates.h>
 #include <rollnip/contact/two_roll_contact.h>
 #include <rollnip/geometry/angles.h>
 #include <rollnip/solvers/iteration_controls.h>
@@ -7,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <sstream>
 #include <utility>
 #include <variant>
 
@@ -64,15 +66,26 @@ namespace rollnip
                      : omega;
     }
 
-    /// The reference angle of the mating roll whose contact edge lies at
-    /// the same distance from the line of centres as the roll's at theta0.
-    double
-    mate_nip_angle(const SceneDescription &scene, const double theta0)
+    /// Why the mating roll's mesh cannot take its contact edge at @p edge
+    /// [rad] ("" if it can): past half of its Sector angle (@p sector) on
+    /// the nip-fitted mesh, which is fitted no further (@p fitted), or at
+    /// the end of the sector otherwise. Checked once the passes agree,
+    /// before any refit.
+    std::string
+    beyond_mate_reach(const double edge, const bool fitted, const double sector)
     {
-      const double R0 = scene.roll.outer_radius();
-      const double Rm = scene.counter_radius();
-      return std::asin(
-        std::min(IterationControls::max_mate_sine, R0 * std::sin(theta0) / Rm));
+      const double reach = fitted ? 0.5 * sector : sector;
+      if (edge < reach * (1 - 1e-9))
+        return "";
+      std::ostringstream s;
+      s << std::setprecision(4) << "the mating roll's contact edge lies at "
+        << edge * degrees_per_radian << " deg, "
+        << (fitted ? "beyond half of" : "at the end of")
+        << " Mating roll/Geometry/Sector angle (" << sector * degrees_per_radian
+        << " deg)"
+        << (fitted ? ", the largest nip its nip-fitted mesh takes" : "")
+        << ": widen Mating roll/Geometry/Sector angle";
+      return s.str();
     }
   } // namespace
 
@@ -296,6 +309,18 @@ namespace rollnip
               << result.indentation << " mm, P " << result.nip_load
               << " N/mm (mating roll " << result.mate_nip_load << ")\n";
         result.converged = false;
+        const std::string beyond =
+          moved < tolerance
+            ? beyond_mate_reach(mate_edge_angle,
+                                mate.has_nip_fitted_mesh(),
+                                mate_parameters.geometry.sector_angle)
+            : "";
+        if (!beyond.empty())
+          {
+            result.message =
+              "two rolls, pass " + std::to_string(k) + ": " + beyond;
+            break;
+          }
         if (moved < tolerance && refit_mate_mesh())
           {
             result.message = "the two rolls did not agree after the mating "
@@ -336,8 +361,11 @@ namespace rollnip
   {
     // The estimate, scaled as it was off at the last converged nip; the
     // passes refit the mesh once they show the edge.
-    const double estimate = mate_nip_angle(scene(), theta0);
-    mate_refits           = 0;
+    const double estimate =
+      NipEstimates::mate_nip_angle(scene().roll.outer_radius(),
+                                   scene().counter_radius(),
+                                   theta0);
+    mate_refits = 0;
     if (mate.has_nip_fitted_mesh())
       fit_mate_mesh(mate_angle_factor * estimate);
     else

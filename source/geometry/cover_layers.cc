@@ -98,7 +98,8 @@ namespace rollnip
   void
   check_layer_ids(const Parameters::AllParameters &parameters,
                   const Triangulation<dim>        &triangulation,
-                  const std::string               &origin)
+                  const std::string               &origin,
+                  const std::string               &prefix)
   {
     const std::vector<double> radii    = layer_radii(parameters);
     const unsigned int        n_layers = radii.size() - 1;
@@ -123,8 +124,8 @@ namespace rollnip
                                "centre at radius " +
                                std::to_string(r) + " mm, outside the layer's " +
                                std::to_string(radii[id]) + " to " +
-                               std::to_string(radii[id + 1]) +
-                               " mm (Material/Layer thicknesses)"));
+                               std::to_string(radii[id + 1]) + " mm (" +
+                               prefix + "Material/Layer thicknesses)"));
       }
   }
 } // namespace rollnip

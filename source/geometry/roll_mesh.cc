@@ -101,12 +101,14 @@ namespace rollnip
 
     void
     make_from_gmsh(const Parameters::AllParameters &parameters,
-                   Triangulation<dim>              &coarse)
+                   Triangulation<dim>              &coarse,
+                   const std::string               &prefix)
     {
       const std::string &file = parameters.mesh.mesh_file;
       std::ifstream      in(file);
       AssertThrow(in.good(),
-                  ExcMessage("Mesh/Mesh file: cannot open '" + file + "'"));
+                  ExcMessage(prefix + "Mesh/Mesh file: cannot open '" + file +
+                             "'"));
       GridIn<dim> grid_in;
       grid_in.attach_triangulation(coarse);
       try
@@ -117,14 +119,14 @@ namespace rollnip
         {
           AssertThrow(false,
                       ExcMessage(
-                        "Mesh/Mesh file: '" + file +
+                        prefix + "Mesh/Mesh file: '" + file +
                         "' is not a readable gmsh quadrilateral mesh"));
         }
       // Q1-P0 and the polar manifold need quadrilaterals; a triangle (or
       // mixed) mesh would crash the first face loop.
       AssertThrow(coarse.n_active_cells() > 0 &&
                     coarse.all_reference_cells_are_hyper_cube(),
-                  ExcMessage("Mesh/Mesh file: '" + file +
+                  ExcMessage(prefix + "Mesh/Mesh file: '" + file +
                              "' contains triangles (or no cells); rollnip "
                              "needs a quadrilateral mesh (in gmsh: Recombine "
                              "Surface, or Mesh.RecombineAll = 1)"));
@@ -153,7 +155,8 @@ namespace rollnip
     void
     check_mesh(const Parameters::AllParameters &parameters,
                const Triangulation<dim>        &coarse,
-               const std::string               &origin)
+               const std::string               &origin,
+               const std::string               &prefix)
     {
       std::set<types::boundary_id> found;
       const double                 R[2]  = {parameters.geometry.inner_radius,
@@ -197,14 +200,16 @@ namespace rollnip
                                "3 far edge)"));
       AssertThrow(worst < 1e-6,
                   ExcMessage(origin +
-                             ": the arcs with ids 0 and 1 do not lie on "
+                             ": the arcs with ids 0 and 1 do not lie on " +
+                             prefix +
                              "Geometry/Inner radius and Outer radius (relative "
                              "mismatch " +
                              std::to_string(worst) + ")"));
       const std::string edge_names[2] = {"symmetry edge (id 2) does not lie "
                                          "on the ray theta = 0",
                                          "far edge (id 3) does not lie on the "
-                                         "ray theta = Geometry/Sector angle (" +
+                                         "ray theta = " +
+                                           prefix + "Geometry/Sector angle (" +
                                            std::to_string(sector * 180. /
                                                           numbers::PI) +
                                            " deg)"};
@@ -218,23 +223,44 @@ namespace rollnip
     }
   } // namespace
 
+  namespace
+  {
+    /// The gmsh mesh of @p parameters into @p coarse, checked against
+    /// Geometry and the layers, its messages naming the entries with
+    /// @p prefix.
+    void
+    read_checked_gmsh(const Parameters::AllParameters &parameters,
+                      const std::string               &prefix,
+                      Triangulation<dim>              &coarse)
+    {
+      make_from_gmsh(parameters, coarse, prefix);
+      const std::string origin =
+        prefix + "Mesh/Mesh file '" + parameters.mesh.mesh_file + "'";
+      check_mesh(parameters, coarse, origin, prefix);
+      check_layer_ids(parameters, coarse, origin, prefix);
+    }
+  } // namespace
+
+  unsigned int
+  check_gmsh_mesh(const Parameters::AllParameters &parameters,
+                  const std::string               &prefix)
+  {
+    Triangulation<dim> coarse;
+    read_checked_gmsh(parameters, prefix, coarse);
+    return coarse.n_active_cells();
+  }
+
   void
   make_roll_mesh(const Parameters::AllParameters           &parameters,
                  parallel::distributed::Triangulation<dim> &triangulation)
   {
     Triangulation<dim> coarse;
     if (parameters.mesh.source == Parameters::MeshSource::gmsh)
-      {
-        make_from_gmsh(parameters, coarse);
-        const std::string origin =
-          "Mesh/Mesh file '" + parameters.mesh.mesh_file + "'";
-        check_mesh(parameters, coarse, origin);
-        check_layer_ids(parameters, coarse, origin);
-      }
+      read_checked_gmsh(parameters, "", coarse);
     else
       {
         make_builtin(parameters, coarse);
-        check_mesh(parameters, coarse, "built-in mesh");
+        check_mesh(parameters, coarse, "built-in mesh", "");
       }
     check_cost(parameters, coarse.n_active_cells());
     triangulation.copy_triangulation(coarse);

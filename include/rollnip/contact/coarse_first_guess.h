@@ -24,6 +24,9 @@ namespace rollnip
     unsigned int n_solves = 0; ///< contact solves on the coarse mesh
     double       seconds  = 0; ///< wall time, set-up included
     std::string  failure;      ///< why there is no guess, if there is none
+    /// The largest q (P [N/mm] or u0 [mm]) of a coarse nip that converged
+    /// and its theta0 [rad]; 0 if none did.
+    double largest_reached = 0, largest_reached_theta = 0;
   };
 
   /// Whether the scene has a coarser level than its own to calibrate on

@@ -55,6 +55,13 @@ namespace rollnip
       return n_coarse;
     }
 
+    /// The largest q of the nips converged so far (P [N/mm] or u0 [mm]),
+    /// 0 if none, and its theta0 [rad].
+    double
+    largest_converged() const;
+    double
+    largest_converged_theta() const;
+
     /// The slope d log q / d log theta0 of the secant through the two
     /// converged nips nearest to @p target (in log q), 0 with fewer.
     double
@@ -122,6 +129,12 @@ namespace rollnip
     ContactResult
     refuse(ContactResult r, const double target, const std::string &why) const;
 
+    /// Whether @p target lies beyond what q can reach below the theta0
+    /// @p failed that just failed: above the largest converged nip below
+    /// it times (failed / its theta0)^IterationControls::max_slope.
+    bool
+    beyond_steepest_rise(const double target, const double failed) const;
+
     /// The largest converged theta0 below @p theta, 0 if there is none.
     double
     converged_below(const double theta) const;
@@ -145,6 +158,9 @@ namespace rollnip
     /// cold target hint_target, 0 if none: the secant's slope while one
     /// nip of that target has converged.
     double slope_hint = 0, hint_target = 0;
+    /// Why the level-0 scene shows a cold target out of reach ("" if it
+    /// does not): its largest converged q lies below half the target.
+    std::string coarse_refusal;
   };
 
   /// The nip for @p target with a NipControl of its own (no sweep).

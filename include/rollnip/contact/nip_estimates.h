@@ -37,6 +37,13 @@ namespace rollnip
     double
     hertz_load(const SceneDescription &scene, const double b);
 
+    /// The reference angle [rad] of a covered mating roll of outer radius
+    /// @p Rm whose contact edge lies at the same distance from the line of
+    /// centres as that of the roll of outer radius @p R0 at @p theta0
+    /// (equal undeformed chords).
+    double
+    mate_nip_angle(const double R0, const double Rm, const double theta0);
+
     /// P of the thin layer(s) for the contact half-width @p b [N/mm].
     double
     thin_layer_load(const SceneDescription &scene, const double b);

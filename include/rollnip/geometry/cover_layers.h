@@ -44,11 +44,13 @@ namespace rollnip
 
   /// Throws a one-line message naming @p origin if a cell's material id is
   /// not a layer or its centre lies outside that layer (gmsh meshes of a
-  /// layered cover carry the layer as physical surface tag 0, 1, ...).
+  /// layered cover carry the layer as physical surface tag 0, 1, ...);
+  /// the entries are named with @p prefix ("" or "Mating roll/").
   void
   check_layer_ids(const Parameters::AllParameters &parameters,
                   const Triangulation<dim>        &triangulation,
-                  const std::string               &origin);
+                  const std::string               &origin,
+                  const std::string               &prefix);
 } // namespace rollnip
 
 #endif

@@ -22,6 +22,14 @@ namespace rollnip
   make_roll_mesh(const Parameters::AllParameters           &parameters,
                  parallel::distributed::Triangulation<dim> &triangulation);
 
+  /// Reads the gmsh mesh of @p parameters (Mesh/Source = gmsh) and checks
+  /// it as make_roll_mesh() does, before any refinement, its messages naming
+  /// the entries with @p prefix ("Mating roll/" for the mating roll);
+  /// returns its number of coarse cells.
+  unsigned int
+  check_gmsh_mesh(const Parameters::AllParameters &parameters,
+                  const std::string               &prefix);
+
   /// Sizes of n cells on an interval of length L whose widths grow
   /// geometrically by the total ratio (last / first) given.
   std::vector<double>
