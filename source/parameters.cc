@@ -4,6 +4,7 @@
 #include <rollnip/cost_estimate.h>
 #include <rollnip/engineering_inputs.h>
 #include <rollnip/face/face_parameters.h>
+#include <rollnip/three_d/three_d_parameters.h>
 #include <rollnip/loading/pressure_load.h>
 #include <rollnip/parameter_entries.h>
 #include <rollnip/parameters.h>
@@ -905,6 +906,7 @@ namespace rollnip
       Study::declare(prm);
       Accuracy::declare(prm);
       Face::declare(prm);
+      ThreeD::declare(prm);
       AccuracyTarget::declare(prm);
     }
 
