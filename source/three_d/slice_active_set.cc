@@ -6,6 +6,7 @@
 #include <rollnip/three_d/slice_body.h>
 
 #include <cmath>
+#include <limits>
 
 namespace rollnip
 {
@@ -184,13 +185,19 @@ namespace rollnip
     SliceBody::evaluate(const double u0) const
     {
       double force_x = 0, chord = 0, penetration = 0;
+      double z_min = std::numeric_limits<double>::max(), z_max = -z_min;
       for (const auto &[x_dof, node] : surface)
         {
           const bool is_active = active.count(x_dof) > 0;
           if (is_active && owned.is_element(x_dof))
             force_x += reactions[x_dof];
           if (is_active)
-            chord = std::max(chord, deformed(node)[1]);
+            {
+              const Point<dim> x = deformed(node);
+              chord              = std::max(chord, x[1]);
+              z_min              = std::min(z_min, x[2]);
+              z_max              = std::max(z_max, x[2]);
+            }
           else
             penetration = std::max(penetration, -gap(node, u0));
         }
@@ -202,6 +209,9 @@ namespace rollnip
               three_d.slice_thickness;
       nip.half_chord        = Utilities::MPI::max(chord, communicator);
       nip.max_penetration   = Utilities::MPI::max(penetration, communicator);
+      z_min                 = Utilities::MPI::min(z_min, communicator);
+      z_max                 = Utilities::MPI::max(z_max, communicator);
+      nip.contact_length    = z_max > z_min ? z_max - z_min : 0.;
       unsigned int n_active = 0;
       for (const auto x_dof : active)
         n_active += owned.is_element(x_dof);

@@ -9,7 +9,8 @@ namespace rollnip
   {
     void
     SliceBody::write_vtu(const std::string &directory,
-                         const std::string &name) const
+                         const std::string &name,
+                         const unsigned int counter) const
     {
       std::vector<std::string> names(dim, "displacement");
       names.emplace_back("pressure_unknown_q");
@@ -23,7 +24,8 @@ namespace rollnip
       rank = Utilities::MPI::this_mpi_process(communicator);
       out.add_data_vector(rank, "mpi_rank");
       out.build_patches();
-      out.write_vtu_with_pvtu_record(directory + "/", name, 0, communicator, 0);
+      out.write_vtu_with_pvtu_record(
+        directory + "/", name, counter, communicator, 2);
     }
   } // namespace three_d
 } // namespace rollnip

@@ -27,9 +27,11 @@ namespace rollnip
     /// One converged approach of the slice.
     struct SliceNip
     {
-      double       u0         = 0; ///< approach [mm]
-      double       P          = 0; ///< line load of the full nip [N/mm]
-      double       half_chord = 0; ///< deformed x2 of the last active node [mm]
+      double u0         = 0; ///< approach [mm]
+      double P          = 0; ///< line load of the full nip [N/mm]
+      double half_chord = 0; ///< deformed x2 of the last active node [mm]
+      /// Extent along the roll axis of the active nodes [mm].
+      double       contact_length  = 0;
       unsigned int active_nodes    = 0;
       unsigned int newton_steps    = 0; ///< over all load steps
       double       max_penetration = 0; ///< max(-gap) over the surface [mm]
@@ -61,9 +63,11 @@ namespace rollnip
       solve(const double u0);
 
       /// Displacement, q, J, Cauchy stress and contact status as
-      /// DIRECTORY/NAME.pvtu with one .vtu per process.
+      /// DIRECTORY/NAME_COUNTER.pvtu with one .vtu per process.
       void
-      write_vtu(const std::string &directory, const std::string &name) const;
+      write_vtu(const std::string &directory,
+                const std::string &name,
+                const unsigned int counter) const;
 
       types::global_dof_index
       n_dofs() const
