@@ -1,12 +1,36 @@
+#include <deal.II/base/array_view.h>
 #include <deal.II/numerics/data_component_interpretation.h>
 #include <deal.II/numerics/data_out.h>
 
 #include <rollnip/three_d/slice_body.h>
 
+#include <cmath>
+
 namespace rollnip
 {
   namespace three_d
   {
+    std::vector<std::pair<double, double>>
+    SliceBody::line_load_profile() const
+    {
+      // The layers are uniform: node plane j lies at z = j h.
+      const unsigned int  n = three_d.layers;
+      const double        h = three_d.slice_thickness / n;
+      std::vector<double> f(n + 1, 0.);
+      for (const auto &[x_dof, node] : surface)
+        if (active.count(x_dof) && owned.is_element(x_dof))
+          f[std::lround(node.X[2] / h)] += reactions[x_dof];
+      const std::vector<double> local = f;
+      Utilities::MPI::sum(ArrayView<const double>(local),
+                          communicator,
+                          ArrayView<double>(f));
+      std::vector<std::pair<double, double>> profile;
+      for (unsigned int j = 0; j <= n; ++j)
+        profile.emplace_back(j * h,
+                             -2. * f[j] / (j == 0 || j == n ? h / 2 : h));
+      return profile;
+    }
+
     void
     SliceBody::write_vtu(const std::string &directory,
                          const std::string &name,

@@ -99,8 +99,16 @@ namespace rollnip
         if (parameters.output.write_vtu)
           body.write_vtu(directory, "slice_3d", nips.size() - 1);
       }
+    const auto profile = body.line_load_profile();
     if (root)
       {
+        write_atomically(directory + "/line_load_along_axis.csv",
+                         [&](std::ostream &out) {
+                           out << std::setprecision(10)
+                               << "z_mm,line_load_N_per_mm\n";
+                           for (const auto &[z, q] : profile)
+                             out << z << ',' << q << '\n';
+                         });
         write_table(directory + "/slice_3d.csv", nips, seconds);
         write_summary(directory + "/summary.txt",
                       body,

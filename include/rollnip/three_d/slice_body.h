@@ -62,6 +62,12 @@ namespace rollnip
       SliceNip
       solve(const double u0);
 
+      /// The line load along the roll axis: (z [mm], q [N/mm]) at every
+      /// plane of surface nodes, the full nip's normal force of the plane's
+      /// active nodes over the plane's share of the slice length.
+      std::vector<std::pair<double, double>>
+      line_load_profile() const;
+
       /// Displacement, q, J, Cauchy stress and contact status as
       /// DIRECTORY/NAME_COUNTER.pvtu with one .vtu per process.
       void
