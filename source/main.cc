@@ -14,6 +14,7 @@
 #include <rollnip/parameters.h>
 #include <rollnip/rolling/rolling_parameters.h>
 #include <rollnip/run_errors.h>
+#include <rollnip/three_d/slice_run.h>
 
 #include <iostream>
 #include <memory>
@@ -152,6 +153,10 @@ main(int argc, char **argv)
       std::cout << EngineeringInputs::describe(parameters);
     if (face.enabled && !validate_only)
       return run_face(parameters, face, communicator);
+    Parameters::ThreeD three_d;
+    three_d.read(file);
+    if (three_d.enabled && !validate_only)
+      return run_three_d(parameters, three_d, communicator);
     if (validate_only)
       return validate_mesh(parameters, file, communicator);
     if (!parameters.study.levels.empty())

@@ -6,6 +6,7 @@
 #include <rollnip/engineering_inputs.h>
 #include <rollnip/face/face_parameters.h>
 #include <rollnip/ignored_entries.h>
+#include <rollnip/three_d/three_d_parameters.h>
 #include <rollnip/loading/pressure_load.h>
 #include <rollnip/material/layer_order.h>
 #include <rollnip/output/units.h>
@@ -972,6 +973,7 @@ namespace rollnip
       Study::declare(prm);
       Accuracy::declare(prm);
       Face::declare(prm);
+      ThreeD::declare(prm);
       AccuracyTarget::declare(prm);
       StudyValues::declare(prm);
       Rolling::declare(prm);

@@ -1,0 +1,158 @@
+#ifndef rollnip_three_d_slice_body_h
+#define rollnip_three_d_slice_body_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <rollnip/contact/counter_surface.h>
+#include <rollnip/parameters.h>
+#include <rollnip/three_d/mooney_rivlin_law.h>
+#include <rollnip/three_d/slice_mesh.h>
+#include <rollnip/three_d/three_d_parameters.h>
+
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+
+namespace rollnip
+{
+  namespace three_d
+  {
+    /// One converged approach of the slice.
+    struct SliceNip
+    {
+      double u0         = 0; ///< approach [mm]
+      double P          = 0; ///< line load of the full nip [N/mm]
+      double half_chord = 0; ///< deformed x2 of the last active node [mm]
+      /// Extent along the roll axis of the active nodes [mm].
+      double       contact_length  = 0;
+      unsigned int active_nodes    = 0;
+      unsigned int newton_steps    = 0; ///< over all load steps
+      double       max_penetration = 0; ///< max(-gap) over the surface [mm]
+    };
+
+    /**
+     * The cover as a 3D body (slice_mesh.h): Q1-P0 (FE_Q(1)^3 x FE_DGP(0)),
+     * total Lagrangian, MooneyRivlinLaw<3>, pressed by the rigid indenter
+     * (a cylinder parallel to the roll axis, or a plane) of Contact. The
+     * contact is frictionless and solved by a primal-dual active set on
+     * the nodes of the outer surface inside Newton (semismooth Newton): a
+     * node is active when its normal contact force minus c times its gap
+     * is positive, and an active node's Newton update is constrained to
+     * the linearised gap, g + n . du = 0. Conditions: bonded at R1,
+     * u_theta = 0 on the plane through the nip, the far edge as Boundary
+     * conditions/Far edge, u_z = 0 on z = 0 and (Far face) on z = L.
+     */
+    class SliceBody
+    {
+    public:
+      SliceBody(const Parameters::AllParameters &parameters,
+                const Parameters::ThreeD        &three_d,
+                const unsigned int               level,
+                const MPI_Comm                   communicator);
+
+      /// Moves the indenter from the current approach to @p u0 in load
+      /// steps and returns the converged state; throws if Newton fails.
+      SliceNip
+      solve(const double u0);
+
+      /// The line load along the roll axis: (z [mm], q [N/mm]) at every
+      /// plane of surface nodes, the full nip's normal force of the plane's
+      /// active nodes over the plane's share of the slice length.
+      std::vector<std::pair<double, double>>
+      line_load_profile() const;
+
+      /// Displacement, q, J, Cauchy stress and contact status as
+      /// DIRECTORY/NAME_COUNTER.pvtu with one .vtu per process.
+      void
+      write_vtu(const std::string &directory,
+                const std::string &name,
+                const unsigned int counter) const;
+
+      types::global_dof_index
+      n_dofs() const
+      {
+        return dof_handler.n_dofs();
+      }
+
+      unsigned int
+      n_cells() const
+      {
+        return triangulation.n_global_active_cells();
+      }
+
+    private:
+      /// The three displacement dofs and the reference position of a
+      /// vertex of the outer surface.
+      struct SurfaceNode
+      {
+        std::array<types::global_dof_index, dim> dofs;
+        Point<dim>                               X;
+      };
+
+      void
+      setup_system();
+      void
+      collect_surface_nodes();
+      /// K, the condensed Newton right-hand side, the unconstrained
+      /// residual (the nodal reactions) and the condensed residual norms.
+      void
+      assemble();
+      /// Fixed, symmetry and face constraints of the Newton update.
+      void
+      make_support_constraints(AffineConstraints<double> &c) const;
+      /// The active set at approach u0 from the current gaps and reactions;
+      /// returns whether it changed.
+      bool
+      update_active_set(const double u0);
+      void
+      make_constraints(const double u0);
+      /// Newton with the active set at fixed u0; false if it failed.
+      bool
+      newton(const double u0, unsigned int &steps);
+      Point<dim>
+      deformed(const SurfaceNode &node) const;
+      double
+      gap(const SurfaceNode &node, const double u0) const;
+      Tensor<1, dim>
+      gap_normal(const SurfaceNode &node, const double u0) const;
+      SliceNip
+      evaluate(const double u0) const;
+      /// max |gap| over the active nodes [mm].
+      double
+      active_gap(const double u0) const;
+
+      MPI_Comm                                  communicator;
+      const Parameters::AllParameters           parameters;
+      const Parameters::ThreeD                  three_d;
+      parallel::distributed::Triangulation<dim> triangulation;
+      FESystem<dim>                             fe;
+      DoFHandler<dim>                           dof_handler;
+      const MooneyRivlinLaw<dim>                law;
+      std::unique_ptr<CounterSurface>           indenter;
+      /// c of the active-set rule, force / length [N/mm].
+      double active_set_scale;
+
+      IndexSet                                       owned, relevant;
+      AffineConstraints<double>                      constraints;
+      AffineConstraints<double>                      homogeneous_constraints;
+      std::map<types::global_dof_index, SurfaceNode> surface; ///< by x dof
+      std::set<types::global_dof_index>              active;  ///< x dofs
+
+      TrilinosWrappers::SparseMatrix system_matrix;
+      TrilinosWrappers::MPI::Vector  solution;   ///< ghosted
+      TrilinosWrappers::MPI::Vector  system_rhs; ///< condensed, owned
+      TrilinosWrappers::MPI::Vector  reactions;  ///< unconstrained, ghosted
+      double                         residual_u = 0, residual_q = 0;
+      double                         current_u0 = 0;
+    };
+  } // namespace three_d
+} // namespace rollnip
+
+#endif

@@ -1,0 +1,49 @@
+#ifndef rollnip_three_d_slice_mesh_h
+#define rollnip_three_d_slice_mesh_h
+
+#include <deal.II/base/types.h>
+#include <deal.II/distributed/tria.h>
+
+#include <rollnip/parameters.h>
+
+namespace rollnip
+{
+  namespace three_d
+  {
+    /// The 3D body's dimension; hides rollnip::dim (= 2) in this namespace.
+    constexpr unsigned int dim = 3;
+
+    /// Boundary ids of the slice: those of boundary_ids.h for the
+    /// cylindrical surfaces and the two edges, and the two face planes.
+    namespace SliceIds
+    {
+      constexpr types::boundary_id inner_arc     = 0;
+      constexpr types::boundary_id outer_arc     = 1;
+      constexpr types::boundary_id symmetry_edge = 2;
+      constexpr types::boundary_id far_edge      = 3;
+      /// z = 0: the symmetry plane through the middle of the face.
+      constexpr types::boundary_id near_face = 4;
+      /// z = Slice thickness.
+      constexpr types::boundary_id far_face = 5;
+    } // namespace SliceIds
+
+    /**
+     * The builtin sector annulus of Geometry and Mesh (the same radial and
+     * graded circumferential cells as the 2D fixed mesh) extruded along z
+     * over @p thickness with @p layers cells, into @p triangulation. The
+     * 2D mesh level @p level is built into the coarse mesh by halving
+     * every in-plane cell @p level times (in r and theta, as the polar
+     * manifold refines the 2D mesh), so that the slice stays @p layers
+     * cells thick and its vertices are the 2D mesh's at that level. All
+     * cells carry a cylindrical manifold about the roll axis (the z axis).
+     */
+    void
+    make_slice_mesh(const Parameters::AllParameters           &parameters,
+                    const unsigned int                         level,
+                    const double                               thickness,
+                    const unsigned int                         layers,
+                    parallel::distributed::Triangulation<dim> &triangulation);
+  } // namespace three_d
+} // namespace rollnip
+
+#endif

@@ -1,0 +1,42 @@
+#ifndef rollnip_three_d_three_d_parameters_h
+#define rollnip_three_d_three_d_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <rollnip/global.h>
+
+#include <string>
+
+/**
+ * The parameters of the 3D body (subsection Three d, doc/three_d.md): the
+ * builtin sector annulus of Geometry and Mesh extruded along the face into
+ * a slice, pressed by the rigid indenter of Contact at the approaches of
+ * Contact/Values (Mode = indentation) through an active set.
+ */
+namespace rollnip
+{
+  namespace Parameters
+  {
+    struct ThreeD
+    {
+      bool         enabled;
+      double       slice_thickness; ///< [mm], along the roll axis
+      unsigned int layers;          ///< cells through the thickness
+      /// u_z = 0 on z = L too (plane-strain slice); false: z = L is free.
+      bool         fix_far_face;
+      double       approach_step; ///< largest u0 increment per load step [mm]
+      unsigned int max_newton_iterations;
+
+      static void
+      declare(ParameterHandler &prm);
+      void
+      parse(ParameterHandler &prm);
+      /// The Three d subsection of @p filename (read with every other
+      /// subsection declared), validated.
+      void
+      read(const std::string &filename);
+    };
+  } // namespace Parameters
+} // namespace rollnip
+
+#endif

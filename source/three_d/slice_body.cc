@@ -1,0 +1,211 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_dgp.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <rollnip/three_d/slice_body.h>
+
+#include <cmath>
+
+namespace rollnip
+{
+  namespace three_d
+  {
+    namespace
+    {
+      Point<2>
+      in_plane(const Point<dim> &x)
+      {
+        return Point<2>(x[0], x[1]);
+      }
+    } // namespace
+
+    SliceBody::SliceBody(const Parameters::AllParameters &parameters,
+                         const Parameters::ThreeD        &three_d,
+                         const unsigned int               level,
+                         const MPI_Comm                   communicator)
+        : communicator(communicator)
+        , parameters(parameters)
+        , three_d(three_d)
+        , triangulation(communicator)
+        , fe(FE_Q<dim>(1), dim, FE_DGP<dim>(0), 1)
+        , dof_handler(triangulation)
+        , law(parameters.material.layer_C1.back(),
+              parameters.material.layer_C2.back())
+        , indenter(make_counter_surface(parameters.geometry.outer_radius,
+                                        parameters.contact.indenter_radius))
+    {
+      AssertThrow(parameters.discretization.element ==
+                    Parameters::Element::q1_p0,
+                  ExcMessage("Three d: Discretization/Element must be Q1-P0 "
+                             "(Q2-P1 is not available in 3D yet)"));
+      AssertThrow(parameters.material.theory == Parameters::Theory::nonlinear,
+                  ExcMessage("Three d: Material/Theory must be nonlinear"));
+      make_slice_mesh(parameters,
+                      level,
+                      three_d.slice_thickness,
+                      three_d.layers,
+                      triangulation);
+      // c of the active-set rule: a nodal force per mm of gap of the order
+      // of the cover's stiffness; any c > 0 gives the same converged set.
+      active_set_scale = law.shear_modulus() * three_d.slice_thickness;
+      setup_system();
+      collect_surface_nodes();
+    }
+
+    void
+    SliceBody::setup_system()
+    {
+      dof_handler.distribute_dofs(fe);
+      owned    = dof_handler.locally_owned_dofs();
+      relevant = DoFTools::extract_locally_relevant_dofs(dof_handler);
+      // Contact constraints couple the dofs of one node only, so the
+      // pattern without constraints holds every condensed entry.
+      DynamicSparsityPattern dsp(relevant);
+      DoFTools::make_sparsity_pattern(dof_handler, dsp);
+      SparsityTools::distribute_sparsity_pattern(dsp,
+                                                 owned,
+                                                 communicator,
+                                                 relevant);
+      system_matrix.reinit(owned, owned, dsp, communicator);
+      solution.reinit(owned, relevant, communicator);
+      reactions.reinit(owned, relevant, communicator);
+      system_rhs.reinit(owned, communicator);
+    }
+
+    void
+    SliceBody::collect_surface_nodes()
+    {
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (!cell->is_artificial())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary() &&
+                face->boundary_id() == SliceIds::outer_arc)
+              for (unsigned int v = 0; v < face->n_vertices(); ++v)
+                {
+                  SurfaceNode node;
+                  for (unsigned int c = 0; c < dim; ++c)
+                    node.dofs[c] = face->vertex_dof_index(v, c);
+                  node.X                = face->vertex(v);
+                  surface[node.dofs[0]] = node;
+                }
+    }
+
+    Point<dim>
+    SliceBody::deformed(const SurfaceNode &node) const
+    {
+      Point<dim> x = node.X;
+      for (unsigned int c = 0; c < dim; ++c)
+        x[c] += solution[node.dofs[c]];
+      return x;
+    }
+
+    double
+    SliceBody::gap(const SurfaceNode &node, const double u0) const
+    {
+      return indenter->gap(in_plane(deformed(node)), u0);
+    }
+
+    Tensor<1, dim>
+    SliceBody::gap_normal(const SurfaceNode &node, const double u0) const
+    {
+      const Tensor<1, 2> n2 =
+        indenter->gap_gradient(in_plane(deformed(node)), u0);
+      Tensor<1, dim> n;
+      n[0] = n2[0];
+      n[1] = n2[1];
+      return n;
+    }
+
+    void
+    SliceBody::assemble()
+    {
+      system_matrix = 0;
+      system_rhs    = 0;
+      TrilinosWrappers::MPI::Vector raw(owned, communicator),
+        condensed(owned, communicator);
+      const QGauss<dim>                    quadrature(2);
+      FEValues<dim>                        fv(fe,
+                       quadrature,
+                       update_gradients | update_values | update_JxW_values);
+      const unsigned int                   n = fe.n_dofs_per_cell();
+      const FEValuesExtractors::Vector     u_ex(0);
+      const FEValuesExtractors::Scalar     q_ex(dim);
+      FullMatrix<double>                   K(n, n);
+      Vector<double>                       R(n), R_u(n);
+      std::vector<types::global_dof_index> dofs(n);
+      std::vector<Tensor<2, dim>>          grad_u(quadrature.size());
+      std::vector<double>                  q(quadrature.size());
+      std::vector<Tensor<2, dim>>          grad_phi(n), dP(n);
+      std::vector<double>                  psi(n);
+      double                               constraint_error = 0;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fv.reinit(cell);
+            K = 0;
+            R = 0;
+            fv[u_ex].get_function_gradients(solution, grad_u);
+            fv[q_ex].get_function_values(solution, q);
+            double cell_constraint = 0;
+            for (unsigned int k = 0; k < quadrature.size(); ++k)
+              {
+                const Tensor<2, dim> F =
+                  unit_symmetric_tensor<dim>() + grad_u[k];
+                const Tensor<2, dim> P   = law.piola(F, q[k]);
+                const Tensor<2, dim> cof = law.pressure_direction(F);
+                const double         g   = law.constraint(F);
+                const double         dx  = fv.JxW(k);
+                cell_constraint += g * dx;
+                for (unsigned int i = 0; i < n; ++i)
+                  {
+                    grad_phi[i] = fv[u_ex].gradient(i, k);
+                    psi[i]      = fv[q_ex].value(i, k);
+                    dP[i]       = law.piola_derivative(F, q[k], grad_phi[i]);
+                  }
+                for (unsigned int i = 0; i < n; ++i)
+                  {
+                    R(i) += (scalar_product(P, grad_phi[i]) + psi[i] * g) * dx;
+                    const double cof_i = scalar_product(cof, grad_phi[i]);
+                    for (unsigned int j = 0; j < n; ++j)
+                      K(i, j) +=
+                        (scalar_product(dP[j], grad_phi[i]) + psi[j] * cof_i +
+                         psi[i] * scalar_product(cof, grad_phi[j])) *
+                        dx;
+                  }
+              }
+            constraint_error += std::abs(cell_constraint);
+            cell->get_dof_indices(dofs);
+            // The displacement rows only: reactions and their norm.
+            for (unsigned int i = 0; i < n; ++i)
+              R_u(i) = fe.system_to_component_index(i).first < dim ? R(i) : 0.;
+            raw.add(dofs, R_u);
+            homogeneous_constraints.distribute_local_to_global(R_u,
+                                                               dofs,
+                                                               condensed);
+            R *= -1.;
+            constraints.distribute_local_to_global(
+              K, R, dofs, system_matrix, system_rhs, true);
+          }
+      system_matrix.compress(VectorOperation::add);
+      system_rhs.compress(VectorOperation::add);
+      raw.compress(VectorOperation::add);
+      condensed.compress(VectorOperation::add);
+      reactions = raw;
+      residual_u =
+        condensed.l2_norm() /
+        std::max(raw.l2_norm(),
+                 1e-8 * law.shear_modulus() * parameters.geometry.outer_radius *
+                   three_d.slice_thickness);
+      residual_q = Utilities::MPI::sum(constraint_error, communicator) /
+                   GridTools::volume(triangulation);
+    }
+  } // namespace three_d
+} // namespace rollnip

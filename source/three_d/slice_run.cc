@@ -1,0 +1,123 @@
+#include <deal.II/base/timer.h>
+
+#include <rollnip/output/atomic_file.h>
+#include <rollnip/three_d/slice_body.h>
+#include <rollnip/three_d/slice_run.h>
+
+#include <iomanip>
+#include <iostream>
+
+namespace rollnip
+{
+  namespace
+  {
+    void
+    write_table(const std::string                    &path,
+                const std::vector<three_d::SliceNip> &nips,
+                const std::vector<double>            &seconds)
+    {
+      write_atomically(path, [&](std::ostream &out) {
+        out << std::setprecision(10)
+            << "u0_mm,P_N_per_mm,half_chord_b_mm,contact_length_mm,"
+               "active_nodes,newton_steps,max_penetration_mm,wall_time_s\n";
+        for (unsigned int k = 0; k < nips.size(); ++k)
+          out << nips[k].u0 << ',' << nips[k].P << ',' << nips[k].half_chord
+              << ',' << nips[k].contact_length << ',' << nips[k].active_nodes
+              << ',' << nips[k].newton_steps << ',' << nips[k].max_penetration
+              << ',' << seconds[k] << '\n';
+      });
+    }
+
+    void
+    write_summary(const std::string               &path,
+                  const three_d::SliceBody        &body,
+                  const Parameters::AllParameters &parameters,
+                  const Parameters::ThreeD        &three_d,
+                  const three_d::SliceNip         &nip,
+                  const double                     seconds,
+                  const unsigned int               processes)
+    {
+      write_atomically(path, [&](std::ostream &out) {
+        out << std::setprecision(8)
+            << "# rollnip 3D slice summary (lengths mm, loads N/mm)\n"
+            << "status = converged\n"
+            << "dimension = 3\n"
+            << "element = Q1-P0\n"
+            << "mesh_level = " << parameters.mesh.global_refinements << '\n'
+            << "n_cells = " << body.n_cells() << '\n'
+            << "n_dofs = " << body.n_dofs() << '\n'
+            << "mpi_processes = " << processes << '\n'
+            << "slice_thickness_mm = " << three_d.slice_thickness << '\n'
+            << "far_face = " << (three_d.fix_far_face ? "fixed axial" : "free")
+            << '\n'
+            << "indentation_u0_mm = " << nip.u0 << '\n'
+            << "nip_load_P_N_per_mm = " << nip.P << '\n'
+            << "half_chord_b_mm = " << nip.half_chord << '\n'
+            << "contact_length_along_axis_mm = " << nip.contact_length << '\n'
+            << "active_nodes = " << nip.active_nodes << '\n'
+            << "max_penetration_mm = " << nip.max_penetration << '\n'
+            << "wall_time_s = " << seconds << '\n';
+      });
+    }
+  } // namespace
+
+  int
+  run_three_d(const Parameters::AllParameters &parameters,
+              const Parameters::ThreeD        &three_d,
+              MPI_Comm                         communicator)
+  {
+    AssertThrow(parameters.contact.mode == Parameters::ContactMode::indentation,
+                ExcMessage("Three d: Contact/Mode must be indentation (the "
+                           "approaches u0 are Contact/Values)"));
+    const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
+    const std::string &directory = parameters.output.directory;
+    Timer              total;
+    three_d::SliceBody body(parameters,
+                            three_d,
+                            parameters.mesh.global_refinements,
+                            communicator);
+    if (root)
+      {
+        make_directories(directory);
+        std::cout << "3D slice: " << body.n_cells() << " cells, "
+                  << body.n_dofs() << " DoFs, " << three_d.slice_thickness
+                  << " mm thick" << std::endl;
+      }
+    std::vector<three_d::SliceNip> nips;
+    std::vector<double>            seconds;
+    for (const double u0 : parameters.contact.values)
+      {
+        Timer timer;
+        nips.push_back(body.solve(u0));
+        seconds.push_back(timer.wall_time());
+        if (root)
+          std::cout << "  u0 = " << u0 << " mm: P = " << nips.back().P
+                    << " N/mm, b = " << nips.back().half_chord << " mm, "
+                    << nips.back().active_nodes << " active nodes, "
+                    << nips.back().newton_steps << " Newton steps, "
+                    << seconds.back() << " s" << std::endl;
+        if (parameters.output.write_vtu)
+          body.write_vtu(directory, "slice_3d", nips.size() - 1);
+      }
+    const auto profile = body.line_load_profile();
+    if (root)
+      {
+        write_atomically(directory + "/line_load_along_axis.csv",
+                         [&](std::ostream &out) {
+                           out << std::setprecision(10)
+                               << "z_mm,line_load_N_per_mm\n";
+                           for (const auto &[z, q] : profile)
+                             out << z << ',' << q << '\n';
+                         });
+        write_table(directory + "/slice_3d.csv", nips, seconds);
+        write_summary(directory + "/summary.txt",
+                      body,
+                      parameters,
+                      three_d,
+                      nips.back(),
+                      total.wall_time(),
+                      Utilities::MPI::n_mpi_processes(communicator));
+      }
+    return 0;
+  }
+} // namespace rollnip

@@ -1,0 +1,81 @@
+#include <rollnip/parameter_entries.h>
+#include <rollnip/parameters.h>
+#include <rollnip/three_d/three_d_parameters.h>
+
+namespace rollnip
+{
+  namespace Parameters
+  {
+    void
+    ThreeD::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Three d");
+      declare_documented(prm,
+                         "Enabled",
+                         "false",
+                         Patterns::Bool(),
+                         "Run the 3D body instead of the 2D cross-section: "
+                         "the builtin mesh of Geometry and Mesh extruded "
+                         "along the roll axis, pressed by the indenter of "
+                         "Contact at the approaches u0 of Contact/Values "
+                         "(Mode = indentation), Q1-P0");
+      declare_documented(prm,
+                         "Slice thickness",
+                         "1",
+                         Patterns::Double(0.),
+                         "Length of the modelled piece of the face along "
+                         "the roll axis [mm]");
+      declare_documented(prm,
+                         "Layers",
+                         "1",
+                         Patterns::Integer(1, 1000),
+                         "Cells through the slice thickness");
+      declare_documented(prm,
+                         "Far face",
+                         "fixed axial",
+                         Patterns::Selection("fixed axial|free"),
+                         "The face z = Slice thickness: 'fixed axial' "
+                         "(u_z = 0, the plane-strain slice) or 'free' (a "
+                         "free cover end); z = 0 always has u_z = 0 (the "
+                         "symmetry plane through the middle of the face)");
+      declare_documented(prm,
+                         "Approach step",
+                         "0.25",
+                         Patterns::Double(0.),
+                         "Largest increment of u0 per load step [mm]");
+      declare_documented(prm,
+                         "Max Newton iterations",
+                         "40",
+                         Patterns::Integer(1, 1000),
+                         "Semismooth Newton iterations per load step (the "
+                         "active set and the displacements together)");
+      prm.leave_subsection();
+    }
+
+    void
+    ThreeD::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Three d");
+      enabled               = prm.get_bool("Enabled");
+      slice_thickness       = prm.get_double("Slice thickness");
+      layers                = prm.get_integer("Layers");
+      fix_far_face          = prm.get("Far face") == "fixed axial";
+      approach_step         = prm.get_double("Approach step");
+      max_newton_iterations = prm.get_integer("Max Newton iterations");
+      prm.leave_subsection();
+      AssertThrow(slice_thickness > 0,
+                  ExcMessage("Three d/Slice thickness must be positive"));
+      AssertThrow(approach_step > 0,
+                  ExcMessage("Three d/Approach step must be positive"));
+    }
+
+    void
+    ThreeD::read(const std::string &filename)
+    {
+      ParameterHandler prm;
+      AllParameters::declare(prm);
+      prm.parse_input(filename);
+      parse(prm);
+    }
+  } // namespace Parameters
+} // namespace rollnip
