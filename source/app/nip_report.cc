@@ -173,14 +173,16 @@ namespace rollnip
                    const Parameters::AllParameters &parameters,
                    const SceneDescription          &scene,
                    const std::string               &top,
-                   const MPI_Comm                   communicator)
+                   const MPI_Comm                   communicator,
+                   const bool                       print)
   {
     if (Utilities::MPI::this_mpi_process(communicator) != 0)
       return;
     std::vector<ReportRow> report;
     for (const auto &r : rows)
       report.push_back(report_row(r, parameters.contact));
-    print_report(report, parameters.contact, scene);
+    if (print)
+      print_report(report, parameters.contact, scene);
     make_directories(top);
     write_report_csv(report,
                      parameters.contact,
