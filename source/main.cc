@@ -11,6 +11,7 @@
 #include <rollnip/mpi_start.h>
 #include <rollnip/parameters.h>
 #include <rollnip/run_errors.h>
+#include <rollnip/solvers/tolerance_floor.h>
 
 #include <iostream>
 #include <memory>
@@ -123,6 +124,9 @@ main(int argc, char **argv)
   return run_guarded(root, [&]() {
     Parameters::AllParameters parameters;
     parameters.read(file);
+    for (const auto &warning : ToleranceFloor::apply(parameters))
+      if (root)
+        std::cerr << "rollnip: warning: " << warning << std::endl;
     Parameters::Face face;
     face.read(file);
     Parameters::AccuracyTarget accuracy;
