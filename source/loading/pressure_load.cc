@@ -15,7 +15,6 @@ namespace rollnip
                              const Parameters::Geometry &geometry)
       : function(std::make_unique<FunctionParser<1>>(1))
       , sector_angle(geometry.sector_angle)
-      , outer_radius(geometry.outer_radius)
   {
     const std::map<std::string, double> constants = {
       {"p0", load.p0},
@@ -93,28 +92,34 @@ namespace rollnip
       }
   }
 
+  double
+  PressureLoad::loaded_angle() const
+  {
+    const std::vector<double> theta  = samples();
+    unsigned int              loaded = 0;
+    for (const double t : theta)
+      loaded += value(t) != 0;
+    return sector_angle * loaded / theta.size();
+  }
+
   std::string
   PressureLoad::describe() const
   {
     const std::vector<double> theta = samples();
-    double first = -1, last = -1, peak = 0, peak_at = 0, fx = 0, fy = 0;
-    for (unsigned int i = 0; i < theta.size(); ++i)
+    double                    first = -1, last = -1, peak = 0, peak_at = 0;
+    for (const double t : theta)
       {
-        const double f = value(theta[i]);
+        const double f = value(t);
         if (f != 0)
           {
-            first = first < 0 ? theta[i] : first;
-            last  = theta[i];
+            first = first < 0 ? t : first;
+            last  = t;
           }
         if (std::abs(f) > std::abs(peak))
           {
             peak    = f;
-            peak_at = theta[i];
+            peak_at = t;
           }
-        // Midpoint rule; the pressure pushes along -N on the arc.
-        const double w = sector_angle / theta.size() * outer_radius;
-        fx -= w * f * std::cos(theta[i]);
-        fy -= w * f * std::sin(theta[i]);
       }
     const double       deg = 180 / numbers::PI;
     std::ostringstream s;
@@ -124,8 +129,7 @@ namespace rollnip
     else
       s << "Load: pressure non-zero for theta in [" << first * deg << ", "
         << last * deg << "] deg, peak " << peak << " MPa at " << peak_at * deg
-        << " deg; resultant on the undeformed arc (" << fx << ", " << fy
-        << ") N/mm";
+        << " deg";
     return s.str();
   }
 } // namespace rollnip
