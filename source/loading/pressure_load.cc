@@ -3,6 +3,8 @@
 #include <rollnip/loading/pressure_load.h>
 #include <rollnip/output/silence_cerr.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -11,6 +13,37 @@
 
 namespace rollnip
 {
+  namespace
+  {
+    /// The first 60 characters of @p text, "..." if there is more.
+    std::string
+    first_line(const std::string &text)
+    {
+      constexpr std::size_t shown = 60;
+      std::string           line  = text.substr(0, shown);
+      std::replace(line.begin(), line.end(), '\n', ' ');
+      return text.size() > shown ? line + "..." : line;
+    }
+
+    /// muparser's @p reason in one line, with its expression length limit
+    /// spelled out for an expression of @p length characters.
+    std::string
+    one_line(std::string reason, const std::size_t length)
+    {
+      std::replace(reason.begin(), reason.end(), '\n', ' ');
+      while (!reason.empty() &&
+             std::isspace(static_cast<unsigned char>(reason.back())))
+        reason.pop_back();
+      const auto start = reason.find_first_not_of(' ');
+      reason           = start == std::string::npos ? "" : reason.substr(start);
+      if (length >= 20000)
+        reason += " (muparser takes at most 20000 characters without "
+                  "blanks; this one has " +
+                  std::to_string(length) + ")";
+      return reason.size() > 200 ? reason.substr(0, 200) + "..." : reason;
+    }
+  } // namespace
+
   PressureLoad::PressureLoad(const Parameters::Load     &load,
                              const Parameters::Geometry &geometry)
       : function(std::make_unique<FunctionParser<1>>(1))
@@ -25,21 +58,43 @@ namespace rollnip
     // muparser's diagnostics go to std::cerr; the message below replaces
     // them with one line.
     const SilenceCerr silence;
+    // muparser ignores blanks but counts them against its limit of 20000
+    // characters.
+    std::string expression = load.pressure_function;
+    expression.erase(std::remove_if(expression.begin(),
+                                    expression.end(),
+                                    [](const unsigned char c) {
+                                      return std::isspace(c);
+                                    }),
+                     expression.end());
+    std::string reason;
     try
       {
-        function->initialize("theta", load.pressure_function, constants);
+        function->initialize("theta", expression, constants);
         // muparser reports some errors (unknown variables) only on use.
         const double f = function->value(Point<1>(0.));
         (void)f;
       }
+    catch (const ExceptionBase &e)
+      {
+        std::ostringstream info;
+        e.print_info(info);
+        reason = info.str();
+      }
+    catch (const std::exception &e)
+      {
+        reason = e.what();
+      }
     catch (...)
       {
-        AssertThrow(false,
-                    ExcMessage("Load/Pressure function: cannot parse '" +
-                               load.pressure_function +
-                               "' (a muparser expression in theta, with "
-                               "constants p0, theta0, R0, R1, pi)"));
+        reason = "unknown error";
       }
+    AssertThrow(reason.empty(),
+                ExcMessage("Load/Pressure function: cannot parse '" +
+                           first_line(load.pressure_function) +
+                           "' (a muparser expression in theta, with "
+                           "constants p0, theta0, R0, R1, pi): " +
+                           one_line(reason, expression.size())));
   }
 
   double
