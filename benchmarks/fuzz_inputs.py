@@ -41,7 +41,8 @@ The kinds of issue 20 (each on the shipped scenes it applies to):
   parabolic pressure followed by 2000 terms ' + 0 * theta' (24 kB), 3000
   terms '+0*theta' (24 kB without blanks) or 140000 (1.1 MB)),
   grading-two-rolls (parameters/two_rolls.prm with Mesh/Adaptive grading
-  passes = 1 or 2). An exit-0 run of the first six must print a "rollnip:
+  passes = 1 or 2); not on parameters/crown.prm (the face model, whose
+  summaries insanity() does not read). An exit-0 run of the first six must print a "rollnip:
   warning:" line naming what it did (EXPECT_WARNING), else it counts as
   "exit 0 but not sane" (silent).
 Before the mutation every case is made cheap in place (the existing `set`
@@ -338,6 +339,8 @@ def issue20_case(rng, kind, base, lines):
     known = {(s, k): v for _, s, k, v in set_lines(lines)}
     mode = known.get(("Contact", "Mode"), "none")
     two_rolls = known.get(("Mating roll", "Type")) == "covered roll"
+    if known.get(("Face", "Enabled")) == "true":
+        return None  # the face model writes other summaries than insanity() reads
     if kind in ("mate-limits", "grading-two-rolls") and not two_rolls:
         return None
     if kind in ("narrow-load-zone", "long-expression") and base != "parabolic_pressure.prm":
