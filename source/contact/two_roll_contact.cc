@@ -219,6 +219,10 @@ namespace rollnip
     const double tolerance =
       std::min(IterationControls::mate_refit_tolerance,
                mate_parameters.contact.control_tolerance);
+    // Every process refits, or none (the refit is collective): rank 0's
+    // edge, so that round-off does not split them at a tight tolerance.
+    mate_edge_angle =
+      Utilities::MPI::broadcast(communicator(), mate_edge_angle, 0);
     if (!mate.has_nip_fitted_mesh() ||
         mate_refits >= IterationControls::max_mate_refits ||
         std::abs(mate_edge_angle - mate_fit_angle) <=

@@ -58,7 +58,7 @@ start_run()
   "$@" run.prm > stdout.txt 2> stderr.txt &
   pid=$!
   for _ in $(seq 1 900); do
-    if grep -q '^Nip 2: P from' stdout.txt; then return 0; fi
+    if grep -q '^Nip 2: P from' stdout.txt 2> /dev/null; then return 0; fi
     kill -0 "$pid" 2> /dev/null || break
     sleep 0.1
   done
@@ -101,8 +101,11 @@ cat stderr.txt
 echo "---"
 [ "$rc" -ne 0 ] || fail "exit code 0 after SIGINT"
 pass "mpirun: exit code $rc"
-[ "$(wc -l < stderr.txt)" -eq 1 ] || fail "expected one line on standard error"
-line="$(cat stderr.txt)"
+# mpirun may add lines of its own (libevent's "[warn] Epoll MOD(1) on fd
+# 25 failed ..." as it tears the job down): the ranks' lines are counted.
+[ "$(grep -c '^rollnip:' stderr.txt)" -eq 1 ] ||
+  fail "expected one line of rollnip on standard error"
+line="$(grep '^rollnip:' stderr.txt)"
 [[ "$line" =~ ^rollnip:\ error:\ contact:\ interrupted\ by\ SIG(INT|TERM)\ during\ nip\ ([0-9]+)\ of\ 30\;\ ([0-9]+)\ converged ]] ||
   fail "the error line does not say where the sweep stopped"
 stopped="${BASH_REMATCH[2]}"
