@@ -2,10 +2,11 @@
 """Fuzzes rollnip's input: runs random mutations of the shipped parameter
 files (parameters/*.prm) and sorts each run into a class. Not part of ctest.
 
-Usage: python3 benchmarks/fuzz_inputs.py [N] [SEED] [--timeout S]
+Usage: python3 benchmarks/fuzz_inputs.py [N] [SEED] [--timeout S] [--kinds K,...]
   N        number of cases (default 300)
   SEED     random seed (default 1); the same N and SEED give the same cases
   --timeout S   seconds per run before it counts as a hang (default 60)
+  --kinds K,... only these mutation kinds (default: all of them)
 Uses build/rollnip, or $ROLLNIP_BIN. The binary is copied to a temporary
 directory first, so that a relink during the run cannot mix two builds.
 Runs one case at a time, one MPI process, DEAL_II_NUM_THREADS=1.
@@ -25,9 +26,28 @@ Each case is one shipped file with one mutation:
   mesh-wrong-radius: Mesh/Source = gmsh with a small generated msh2 file
   (empty, a valid quadrilateral mesh cut at a random byte, the same mesh
   split into triangles, a file that does not exist, a mesh 5 % too big).
+The kinds of issue 20 (each on the shipped scenes it applies to):
+  mate-limits (parameters/two_rolls.prm: the mating roll's sector angle 5
+  or 10 deg, 12 refinements, a negative inner radius, C1 = 1e300, 0 radial
+  cells), ignored-entries (Mating roll/Type = rigid with the covered roll
+  described, Load/p0 and theta0 in a contact scene, Contact entries with
+  Mode = none), narrow-load-zone (parameters/parabolic_pressure.prm with
+  Load/theta0 = 0.1745, 0.01, 0.05 or 0.3 deg), tolerance-roundoff (a
+  contact scene with a Contact or Newton tolerance of 0, 1e-15, 1e-16,
+  1e-20 or 5e-324, or Contact or Mating roll/Maximum iterations = 1),
+  metres-for-mm (every radius, diameter and thickness of a file divided by
+  1000), force-on-face (parameters/engineering_nip.prm with Load unit N or
+  kN on a Face length of 1e-300, 1e-6, 1 or 1e9 mm), long-expression (the
+  parabolic pressure followed by 2000 terms ' + 0 * theta' (24 kB), 3000
+  terms '+0*theta' (24 kB without blanks) or 140000 (1.1 MB)),
+  grading-two-rolls (parameters/two_rolls.prm with Mesh/Adaptive grading
+  passes = 1 or 2); not on parameters/crown.prm (the face model, whose
+  summaries insanity() does not read). An exit-0 run of the first six must print a "rollnip:
+  warning:" line naming what it did (EXPECT_WARNING), else it counts as
+  "exit 0 but not sane" (silent).
 Before the mutation every case is made cheap in place (the existing `set`
 line is changed, or one is added to its subsection): Mesh/Global
-refinements = 0, Output/Directory = out, Write VTU = false, Print timing =
+refinements = 0 (and Mating roll/Mesh/Global refinements = 0), Output/Directory = out, Write VTU = false, Print timing =
 false; a mutation of one of these keys replaces that override. Each case
 runs in its own temporary directory (relative paths resolve there).
 
@@ -96,7 +116,19 @@ KINDS = ["value-negative", "value-zero", "value-huge", "value-tiny", "value-nan-
          "value-text", "units-x1000", "units-div1000", "units-x2", "units-rad-for-deg",
          "missing-key", "duplicate-key", "wrong-subsection", "misspelled-key", "truncated",
          "mesh-empty", "mesh-truncated", "mesh-triangles", "mesh-missing",
-         "mesh-wrong-radius"]
+         "mesh-wrong-radius",
+         # The classes of issue 20 (ISSUE20_KINDS below).
+         "mate-limits", "ignored-entries", "narrow-load-zone", "tolerance-roundoff",
+         "metres-for-mm", "force-on-face", "long-expression", "grading-two-rolls"]
+# An exit-0 run of these kinds must say what it did with the odd input: a
+# "rollnip: warning:" line matching the pattern, else it is "exit 0 but not
+# sane" (a silent answer to a question the user did not mean to ask).
+EXPECT_WARNING = {"mate-limits": r"Mating roll/",
+                  "ignored-entries": r"ignored|Mating roll/|Load/|Contact/",
+                  "narrow-load-zone": r"Load/",
+                  "tolerance-roundoff": r"tolerance|iterations",
+                  "metres-for-mm": r"mm|metre|unit",
+                  "force-on-face": r"Face length|Load unit|N/mm"}
 CLASSES = ["clean refusal", "noisy refusal", "crash", "hang", "exit 0 and sane",
            "exit 0 but not sane"]
 FAILING = ["crash", "hang", "noisy refusal", "exit 0 but not sane"]
@@ -142,17 +174,19 @@ def declared_entries(binary):
 
 
 def set_lines(lines):
-    """[(index, subsection, key, value)] of the `set` lines (shipped files are one level)."""
-    found, sub = [], None
+    """[(index, subsection path, key, value)] of the `set` lines; nested subsections
+    (Mating roll/Geometry) are joined by '/'."""
+    found, path = [], []
     for i, line in enumerate(lines):
         s = line.split("#", 1)[0].strip()
         if s.startswith("subsection "):
-            sub = s[len("subsection "):].strip()
+            path.append(s[len("subsection "):].strip())
         elif s == "end":
-            sub = None
-        elif s.startswith("set ") and sub:
+            if path:
+                path.pop()
+        elif s.startswith("set ") and path:
             key, _, value = s[4:].partition("=")
-            found.append((i, sub, key.strip(), value.strip()))
+            found.append((i, "/".join(path), key.strip(), value.strip()))
     return found
 
 
@@ -166,12 +200,25 @@ def put(lines, sub, key, value):
 
 
 def add(lines, sub, key, value):
-    """Adds a `set` line at the top of sub (a new block at the end if there is none)."""
+    """Adds a `set` line at the top of the subsection path sub (new blocks at the end
+    if there is none)."""
+    want, path = sub.split("/"), []
     for i, line in enumerate(lines):
-        if line.strip() == f"subsection {sub}":
-            lines.insert(i + 1, f"  set {key} = {value}")
-            return
-    lines.extend(["", f"subsection {sub}", f"  set {key} = {value}", "end"])
+        s = line.split("#", 1)[0].strip()
+        if s.startswith("subsection "):
+            path.append(s[len("subsection "):].strip())
+            if path == want:
+                lines.insert(i + 1, f"  set {key} = {value}")
+                return
+        elif s == "end" and path:
+            path.pop()
+    lines.extend([""] + [f"subsection {p}" for p in want] + [f"  set {key} = {value}"]
+                 + ["end"] * len(want))
+
+
+def entry_doc(entries, sub, key):
+    """The allowed-text of sub/key (declared_entries knows the last subsection)."""
+    return entries.get((sub.split("/")[-1], key), "")
 
 
 def floats(value):
@@ -283,12 +330,93 @@ def quad_mesh(r1, r0, sector_deg, nr=3, nt=16, triangles=False):
     return "\n".join(lines + ["$EndElements"]) + "\n"
 
 
-def make_case(rng, kind, base_lines, entries):
+PARABOLIC = "theta < theta0 ? p0 * (1 - (theta/theta0)^2) : 0"
+
+
+def issue20_case(rng, kind, base, lines):
+    """Applies a mutation of the issue-20 kinds to lines; its description, or None
+    when base is not a scene of the kind."""
+    known = {(s, k): v for _, s, k, v in set_lines(lines)}
+    mode = known.get(("Contact", "Mode"), "none")
+    two_rolls = known.get(("Mating roll", "Type")) == "covered roll"
+    if known.get(("Face", "Enabled")) == "true":
+        return None  # the face model writes other summaries than insanity() reads
+    if kind in ("mate-limits", "grading-two-rolls") and not two_rolls:
+        return None
+    if kind in ("narrow-load-zone", "long-expression") and base != "parabolic_pressure.prm":
+        return None
+    if kind == "force-on-face" and base != "engineering_nip.prm":
+        return None
+    if kind == "mate-limits":
+        sub, key, value = rng.choice([
+            ("Mating roll/Geometry", "Sector angle", "5"),
+            ("Mating roll/Geometry", "Sector angle", "10"),
+            ("Mating roll/Mesh", "Global refinements", "12"),
+            ("Mating roll/Geometry", "Inner radius", "-10"),
+            ("Mating roll/Material", "C1", "1e300"),
+            ("Mating roll/Mesh", "Radial cells", "0")])
+    elif kind == "ignored-entries":
+        if two_rolls and rng.random() < 0.5:
+            sub, key, value = "Mating roll", "Type", "rigid"
+        elif mode != "none":
+            put(lines, "Load", "p0", "0.3")
+            sub, key, value = "Load", "theta0", "5"
+        else:
+            sub, key, value = "Contact", rng.choice(
+                ["Conformity tolerance", "Control tolerance", "Maximum iterations"]), "1e-5"
+            if key == "Maximum iterations":
+                value = "10"
+    elif kind == "narrow-load-zone":
+        sub, key = "Load", "theta0"
+        value = rng.choice(["0.1745", "0.01", "0.05", "0.3"])
+    elif kind == "tolerance-roundoff":
+        if mode == "none":
+            return None
+        choices = [("Contact", "Control tolerance"), ("Contact", "Conformity tolerance"),
+                   ("Nonlinear solver", "Residual tolerance"),
+                   ("Nonlinear solver", "Increment tolerance"),
+                   ("Nonlinear solver", "Constraint tolerance")]
+        sub, key = rng.choice(choices)
+        value = rng.choice(["0", "1e-15", "1e-16", "1e-20", "5e-324"])
+        if rng.random() < 0.25:
+            sub, key, value = (("Mating roll", "Maximum iterations", "1") if two_rolls
+                               else ("Contact", "Maximum iterations", "1"))
+    elif kind == "metres-for-mm":
+        changed = []
+        for i, sub, key, value in set_lines(lines):
+            numbers = floats(value)
+            if key in RADII and numbers and sub.split("/")[-1] in ("Geometry", "Contact"):
+                lines[i] = f"  set {key} = " + ", ".join(fmt(x / 1000) for x in numbers)
+                changed.append(f"{sub}/{key}")
+        return ("every length in m: " + ", ".join(changed)) if changed else None
+    elif kind == "force-on-face":
+        put(lines, "Contact", "Load unit", rng.choice(["N", "kN"]))
+        sub, key = "Contact", "Face length"
+        value = rng.choice(["1e-300", "1e-6", "1", "1e9"])
+    elif kind == "long-expression":
+        sub, key = "Load", "Pressure function"
+        n, glue = rng.choice([(2000, " + 0 * theta"), (3000, "+0*theta"),
+                              (140000, "+0*theta")])
+        value = f"({PARABOLIC})" + glue * n
+        put(lines, sub, key, value)
+        return f"{sub}/{key}: the parabolic pressure and {n} x {glue!r} ({len(value)} bytes)"
+    else:  # grading-two-rolls
+        sub, key, value = "Mesh", "Adaptive grading passes", rng.choice(["1", "2"])
+    put(lines, sub, key, value)
+    return f"{sub}/{key} = {value}"
+
+
+def make_case(rng, kind, base_lines, entries, base=""):
     """(prm text, description, {file name: content}) of one mutated case, or
     None when the base file has no entry the kind can mutate."""
     lines = list(base_lines)
     for sub, key, value in CHEAP:
         put(lines, sub, key, value)
+    if any(e[1] == "Mating roll/Mesh" for e in set_lines(lines)):
+        put(lines, "Mating roll/Mesh", "Global refinements", "0")
+    if kind in EXPECT_WARNING or kind in ("long-expression", "grading-two-rolls"):
+        what = issue20_case(rng, kind, base, lines)
+        return None if what is None else ("\n".join(lines) + "\n", what, {})
     entries_here = set_lines(lines)
     nip_angle = any(e[1:] == ("Contact", "Mode", "nip angle") for e in entries_here)
     files = {}
@@ -323,7 +451,7 @@ def make_case(rng, kind, base_lines, entries):
         what = f"deleted {sub}/{key} = {value}"
     elif kind == "duplicate-key":
         i, sub, key, value = rng.choice(entries_here)
-        new = other_value(rng, entries.get((sub, key), ""), key, value)
+        new = other_value(rng, entry_doc(entries, sub, key), key, value)
         lines.insert(i + 1, f"  set {key} = {new}")
         what = f"{sub}/{key} = {value}, then again = {new}"
     elif kind == "wrong-subsection":
@@ -448,7 +576,7 @@ def insanity(case_dir, stdout):
     return problems
 
 
-def classify(rc, stdout, stderr, case_dir, timeout):
+def classify(rc, stdout, stderr, case_dir, timeout, kind=""):
     """(class, detail)."""
     if rc is None:
         return "hang", f"no exit within {timeout:g} s"
@@ -468,6 +596,10 @@ def classify(rc, stdout, stderr, case_dir, timeout):
             return "noisy refusal", ", ".join(why)
         return "clean refusal", f"{len(lines)} stderr line(s)"
     problems = insanity(case_dir, stdout)
+    if kind in EXPECT_WARNING and not any(
+            line.startswith("rollnip: warning:") and re.search(EXPECT_WARNING[kind], line)
+            for line in lines):
+        problems.append(f"silent: no warning matching /{EXPECT_WARNING[kind]}/")
     if problems:
         return "exit 0 but not sane", "; ".join(problems)
     return "exit 0 and sane", ("stderr: " + lines[-1]) if lines else ""
@@ -484,7 +616,13 @@ def main():
     parser.add_argument("n", nargs="?", type=int, default=300)
     parser.add_argument("seed", nargs="?", type=int, default=1)
     parser.add_argument("--timeout", type=float, default=60)
+    parser.add_argument("--kinds", default="",
+                        help="comma-separated mutation kinds to run (default: all)")
     args = parser.parse_args()
+    kinds_run = [k.strip() for k in args.kinds.split(",") if k.strip()] or KINDS
+    unknown = sorted(set(kinds_run) - set(KINDS))
+    if unknown:
+        parser.error(f"unknown kinds: {', '.join(unknown)}")
     rng = random.Random(args.seed)
     stamp = time.strftime("%Y%m%d-%H%M%S")
     keep_dir = os.path.join(RESULTS, f"fuzz-{stamp}")
@@ -500,13 +638,13 @@ def main():
     # Kinds in shuffled rounds: every kind gets about N / len(KINDS) cases.
     kinds = []
     while len(kinds) < args.n:
-        kinds += rng.sample(KINDS, len(KINDS))
+        kinds += rng.sample(kinds_run, len(kinds_run))
     records, start = [], time.time()
     for n, kind in enumerate(kinds[:args.n], 1):
         case = None
         while case is None:
             base = rng.choice(sorted(bases))
-            case = make_case(rng, kind, bases[base], entries)
+            case = make_case(rng, kind, bases[base], entries, base)
         text, what, files = case
         case_dir = os.path.join(work, f"case-{n:03d}")
         os.makedirs(case_dir)
@@ -514,7 +652,7 @@ def main():
         for name, content in files.items():
             open(os.path.join(case_dir, name), "w").write(content)
         rc, seconds, stdout, stderr = run(binary, case_dir, args.timeout)
-        cls, detail = classify(rc, stdout, stderr, case_dir, args.timeout)
+        cls, detail = classify(rc, stdout, stderr, case_dir, args.timeout, kind)
         lines = [line for line in stderr.splitlines() if line.strip()]
         record = dict(case=n, base=base, kind=kind, mutation=what,
                       exit="timeout" if rc is None else rc, seconds=f"{seconds:.1f}",
@@ -577,8 +715,9 @@ def main():
         print(f"note: {ROLLNIP} changed during the run; the copy made at the start was used")
     print(f"\ntable: {summary_csv}\ncases: {keep_dir}/cases.csv"
           f" (failing cases kept there as case-NNN/)")
+    only = f" --kinds {args.kinds}" if args.kinds else ""
     print(f"run: python3 benchmarks/fuzz_inputs.py {args.n} {args.seed}"
-          f" --timeout {args.timeout:g}; {elapsed:.0f} s")
+          f" --timeout {args.timeout:g}{only}; {elapsed:.0f} s")
     return 0
 
 

@@ -14,6 +14,7 @@
 #include <rollnip/parameters.h>
 #include <rollnip/rolling/rolling_parameters.h>
 #include <rollnip/run_errors.h>
+#include <rollnip/solvers/tolerance_floor.h>
 #include <rollnip/three_d/slice_run.h>
 
 #include <iostream>
@@ -133,6 +134,9 @@ main(int argc, char **argv)
   return run_guarded(root, [&]() {
     Parameters::AllParameters parameters;
     parameters.read(file);
+    for (const auto &warning : ToleranceFloor::apply(parameters))
+      if (root)
+        std::cerr << "rollnip: warning: " << warning << std::endl;
     Parameters::Face face;
     face.read(file);
     Parameters::AccuracyTarget accuracy;

@@ -21,6 +21,21 @@ namespace rollnip
   /// "interrupted by SIGINT" (or SIGTERM).
   std::string
   interrupt_message();
+
+  /**
+   * The line a signal prints at once, as "rollnip: error: @p prefix
+   * interrupted by SIGINT@p suffix": mpirun follows the SIGTERM it sends
+   * with SIGKILL a second later, too soon for the run to reach its next
+   * load step and say where it stopped. Empty @p prefix and @p suffix
+   * disarm it. Call it on one process only (rank 0).
+   */
+  void
+  arm_interrupt_line(const std::string &prefix, const std::string &suffix);
+
+  /// Whether a signal has printed the armed line on this process (the run
+  /// then does not print it again).
+  bool
+  interrupt_line_printed();
 } // namespace rollnip
 
 #endif

@@ -452,7 +452,8 @@ namespace rollnip
                    const SceneDescription          &scene,
                    const std::string               &top,
                    const MPI_Comm                   communicator,
-                   const std::vector<BandWidths>   &band)
+                   const std::vector<BandWidths>   &band,
+                   const bool                       print)
   {
     if (Utilities::MPI::this_mpi_process(communicator) != 0)
       return;
@@ -466,9 +467,12 @@ namespace rollnip
           row.band = band[i];
         report.push_back(row);
       }
-    print_report(report, parameters, scene, units);
-    print_comparisons(report, parameters, units);
-    print_rolling(report);
+    if (print)
+      {
+        print_report(report, parameters, scene, units);
+        print_comparisons(report, parameters, units);
+        print_rolling(report);
+      }
     make_directories(top);
     write_report_csv(report, parameters, scene, units, top + "/nip_report.csv");
   }

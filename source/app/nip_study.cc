@@ -14,6 +14,7 @@
 #include <rollnip/output/atomic_file.h>
 #include <rollnip/output/polyline_vtp.h>
 #include <rollnip/output/silence_cerr.h>
+#include <rollnip/output/stale_nip_directories.h>
 #include <rollnip/output/sweep_pvd.h>
 #include <rollnip/output/units.h>
 #include <rollnip/rolling/rolling_evaluation.h>
@@ -395,6 +396,27 @@ namespace rollnip
         }
     }
 
+    /// Where a sweep stopped: " during nip @p n of @p total; ..." with
+    /// @p converged nips done.
+    std::string
+    where_stopped(const unsigned int n,
+                  const std::size_t  total,
+                  const std::size_t  converged)
+    {
+      return " during nip " + std::to_string(n) + " of " +
+             std::to_string(total) + "; " + std::to_string(converged) +
+             " converged nip(s) are in nip_characteristic.csv";
+    }
+
+    /// What the files in @p top hold after a sweep stopped.
+    std::string
+    files_note(const std::string &top)
+    {
+      return "; the files in '" + top +
+             "' hold the last converged nip (contact.txt: the last "
+             "iteration)";
+    }
+
     /// Why a sweep stopped at nip @p n of @p total with @p converged
     /// nips done: the contact's @p message, or the interruption.
     std::string
@@ -406,9 +428,23 @@ namespace rollnip
     {
       if (!interrupt_requested(communicator))
         return message;
-      return interrupt_message() + " during nip " + std::to_string(n) + " of " +
-             std::to_string(total) + "; " + std::to_string(converged) +
-             " converged nip(s) are in nip_characteristic.csv";
+      return interrupt_message() + where_stopped(n, total, converged);
+    }
+
+    /// Arms the line a signal prints at once during nip @p n (rank 0; see
+    /// arm_interrupt_line()): the same line the sweep prints when it stops
+    /// there.
+    void
+    arm_stop_line(const unsigned int n,
+                  const std::size_t  total,
+                  const std::size_t  converged,
+                  const std::string &top,
+                  const MPI_Comm     communicator)
+    {
+      if (Utilities::MPI::this_mpi_process(communicator) == 0)
+        arm_interrupt_line("contact: ",
+                           where_stopped(n, total, converged) +
+                             files_note(top));
     }
 
     /// The nip characteristic on the screen and, whole, as
@@ -419,10 +455,11 @@ namespace rollnip
                              const bool                 with_linear,
                              const double               cover_thickness,
                              const std::string         &top,
-                             const MPI_Comm             communicator)
+                             const MPI_Comm             communicator,
+                             const bool                 print = true)
     {
       const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
-      ConditionalOStream pcout(std::cout, root);
+      ConditionalOStream pcout(std::cout, root && print);
       // Linear theory off, or a companion that did not converge: nan.
       auto linear_value = [with_linear](const NipRow &r, const double v) {
         return with_linear && r.linear.converged
@@ -493,6 +530,48 @@ namespace rollnip
                 }
             });
         }
+    }
+
+    /// Both tables of @p rows, written (not printed) at the start of a
+    /// sweep and after every nip, so that a run killed later (mpirun's
+    /// SIGKILL after its SIGTERM, a second signal) keeps the nips that
+    /// converged.
+    void
+    write_tables(const std::vector<NipRow>       &rows,
+                 const bool                       with_linear,
+                 const Parameters::AllParameters &parameters,
+                 const SceneDescription          &scene,
+                 const MPI_Comm                   communicator)
+    {
+      const std::string &top = parameters.output.directory;
+      write_nip_characteristic(rows,
+                               with_linear,
+                               scene.roll.cover_thickness(),
+                               top,
+                               communicator,
+                               false);
+      write_nip_report(rows, parameters, scene, top, communicator, {}, false);
+    }
+
+    /// Removes (rank 0) and names the nip-NN directories an earlier run
+    /// left in @p top beyond this run's @p n_directories.
+    void
+    remove_stale_nips(const std::string &top,
+                      const unsigned int n_directories,
+                      const MPI_Comm     communicator)
+    {
+      if (Utilities::MPI::this_mpi_process(communicator) != 0)
+        return;
+      const std::vector<std::string> removed =
+        remove_stale_nip_directories(top, n_directories);
+      if (!removed.empty())
+        std::cout << "Output: removed " << removed.size() << " nip director"
+                  << (removed.size() > 1 ? "ies" : "y")
+                  << " of an earlier run from '" << top << "' ("
+                  << removed.front()
+                  << (removed.size() > 1 ? " .. " + removed.back() : "")
+                  << "), beyond the " << n_directories << " of this run"
+                  << std::endl;
     }
 
     /// The pieces of nip directory @p nip in the sweep's PVD, at the nip's
@@ -580,9 +659,13 @@ namespace rollnip
       SweepPvd          linear_pvd(top + "/solution_sweep_linear.pvd", meaning);
       // A single nip is a sweep of one: its PVD holds the indenter and the
       // contact pressure beside the cover, which its solution.pvd does not.
-      const bool series = parameters.output.write_vtu;
+      const bool     series = parameters.output.write_vtu;
+      const MPI_Comm comm   = nonlinear.communicator();
+      remove_stale_nips(top, sweep ? values.size() : 0, comm);
+      write_tables(rows, linear_scene, parameters, scene.description, comm);
       for (unsigned int n = 0; n < values.size(); ++n)
         {
+          arm_stop_line(n + 1, values.size(), rows.size(), top, comm);
           // The nip's directory, relative to the PVD's and from the cwd.
           const std::string nip =
             sweep ? "nip-" + Utilities::int_to_string(n + 1, 2) : ".";
@@ -633,11 +716,11 @@ namespace rollnip
             add_to_sweep(
               pvd, parameters, scene.description, row.nonlinear, nip, vtu);
           if (!row.nonlinear.converged)
-            return why_stopped(row.nonlinear.message,
-                               n + 1,
-                               values.size(),
-                               rows.size(),
-                               nonlinear.communicator());
+            {
+              arm_interrupt_line("", "");
+              return why_stopped(
+                row.nonlinear.message, n + 1, values.size(), rows.size(), comm);
+            }
 
           if (linear_scene)
             {
@@ -661,8 +744,14 @@ namespace rollnip
                                    1);
                 }
             }
+          // A signal has said that this nip is not in the tables.
+          arm_interrupt_line("", "");
+          if (interrupt_requested(comm))
+            return why_stopped("", n + 1, values.size(), rows.size(), comm);
           rows.push_back(row);
+          write_tables(rows, linear_scene, parameters, scene.description, comm);
         }
+      arm_interrupt_line("", "");
       return "";
     }
 
@@ -727,14 +816,14 @@ namespace rollnip
       write_nip_report(rows, parameters, scene, top, communicator, band);
       if (rows_out)
         *rows_out = rows;
+      arm_interrupt_line("", "");
       if (!failure.empty())
         {
-          if (Utilities::MPI::this_mpi_process(communicator) == 0)
+          // A signal may have printed the line already.
+          if (Utilities::MPI::this_mpi_process(communicator) == 0 &&
+              !interrupt_line_printed())
             std::cerr << "rollnip: error: contact: " << failure
-                      << "; the files in '" << top
-                      << "' hold the last converged nip (contact.txt: the "
-                         "last iteration)"
-                      << std::endl;
+                      << files_note(top) << std::endl;
           return 1;
         }
       return 0;
@@ -806,6 +895,7 @@ namespace rollnip
       }
     catch (...)
       {
+        arm_interrupt_line("", "");
         for (auto *s : {scene.get(), linear.get()})
           if (s)
             s->silence_timers();

@@ -12,7 +12,7 @@
 #include <rollnip/body/roll_body.h>
 #include <rollnip/boundary_ids.h>
 #include <rollnip/geometry/roll_mesh.h>
-#include <rollnip/loading/pressure_load.h>
+#include <rollnip/loading/applied_load.h>
 
 #include <cmath>
 
@@ -93,8 +93,7 @@ namespace rollnip
     if (parameters.contact.mode == Parameters::ContactMode::none &&
         parameters.boundary_conditions.condition[BoundaryIds::outer_arc] ==
           Parameters::BoundaryCondition::pressure)
-      pcout << PressureLoad(parameters.load, parameters.geometry).describe()
-            << std::endl;
+      pcout << check_applied_load(*this) << std::endl;
   }
 
   void

@@ -7,6 +7,7 @@
 #include <rollnip/material/material_table.h>
 #include <rollnip/output/atomic_file.h>
 #include <rollnip/solvers/iteration_controls.h>
+#include <rollnip/solvers/tolerance_floor.h>
 
 #include <Eigen/Dense>
 
@@ -324,6 +325,21 @@ namespace rollnip
         return "";
       }
     std::ostringstream msg;
+    const double       round_off =
+      ToleranceFloor::conformity_round_off(parameters.geometry.outer_radius,
+                                           gaps.u0);
+    if (before < round_off)
+      {
+        msg << std::scientific << std::setprecision(3)
+            << "the contact iteration stalled on round-off at theta0 = "
+            << std::fixed << zone.theta0 * degrees_per_radian
+            << " deg: conformity residual " << std::scientific << before
+            << ", within the round-off of the gaps at u0 = " << std::fixed
+            << gaps.u0 << " mm (" << std::scientific << round_off
+            << "), above the tolerance " << conformity_tolerance
+            << ": raise Contact/Conformity tolerance (and Control tolerance)";
+        return msg.str();
+      }
     msg << "the contact iteration diverges at theta0 = " << std::fixed
         << zone.theta0 * degrees_per_radian << " deg (conformity residual "
         << std::scientific << std::setprecision(3) << before
@@ -465,12 +481,14 @@ namespace rollnip
   InverseContact::finish(const Zone &zone, ContactResult &result)
   {
     if (!result.converged && result.message.empty())
-      result.message = "the contact iteration did not reach the conformity "
-                       "tolerance " +
-                       std::to_string(conformity_tolerance) + " in " +
-                       std::to_string(parameters.contact.max_iterations) +
-                       " iterations (reached " +
-                       std::to_string(result.conformity) + ")";
+      {
+        std::ostringstream s;
+        s << std::setprecision(3)
+          << "the contact iteration did not reach the conformity tolerance "
+          << conformity_tolerance << " in " << parameters.contact.max_iterations
+          << " iterations (reached " << result.conformity << ")";
+        result.message = s.str();
+      }
     if (result.converged && result.min_pressure < 0)
       {
         result.converged = false;

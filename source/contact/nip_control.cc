@@ -25,6 +25,29 @@ namespace rollnip
     /// levels differ in q(theta0) by a few per cent, and in the load a
     /// cover carries before it would invert by about as much.
     constexpr double coarse_reach_fraction = 0.5;
+    /// Stepping back from failed contact solves ends below this fraction
+    /// of the first theta0 tried (ten halvings): a nip that small is not
+    /// what the target needs, and the mesh would not resolve it.
+    constexpr double min_step_back = 1e-3;
+
+    /// Marks the message of a contact solve that stalled on round-off
+    /// (InverseContact::damp()).
+    const std::string stalled_on_round_off = "stalled on round-off";
+
+    /// Why a target is not reached when the contact solve failed at every
+    /// theta0 from @p first down to @p last [rad], the last for @p why.
+    std::string
+    every_theta_failed(const double       first,
+                       const double       last,
+                       const std::string &why)
+    {
+      std::ostringstream s;
+      s << std::setprecision(4)
+        << "the contact iteration fails at every theta0 "
+        << "tried, from " << first * deg << " down to " << last * deg
+        << " deg (the last: " << why << ")";
+      return s.str();
+    }
 
   } // namespace
 
@@ -282,6 +305,19 @@ namespace rollnip
     return r;
   }
 
+  ContactResult
+  NipControl::stop_short(ContactResult      r,
+                         const double       target,
+                         const std::string &why) const
+  {
+    std::ostringstream s;
+    s << std::setprecision(6) << "the target " << quantity() << " = " << target
+      << unit() << " is not reached: " << why << "; " << largest_reached();
+    r.converged = false;
+    r.message   = s.str();
+    return r;
+  }
+
   double
   NipControl::converged_below(const double theta) const
   {
@@ -330,11 +366,13 @@ namespace rollnip
                              Utilities::MPI::this_mpi_process(comm) == 0);
     const double       theta_max = contact.max_nip_angle();
 
-    double theta            = guess > 0           ? guess
-                              : converged.empty() ? cold_guess(target)
-                                                  : predict(target);
-    theta                   = std::min(theta, theta_max);
-    double        failed_at = std::numeric_limits<double>::max();
+    double theta              = guess > 0           ? guess
+                                : converged.empty() ? cold_guess(target)
+                                                    : predict(target);
+    theta                     = std::min(theta, theta_max);
+    const double  first_theta = theta;
+    double        failed_at   = std::numeric_limits<double>::max();
+    double        closest     = std::numeric_limits<double>::infinity();
     ContactResult r;
     if (!coarse_refusal.empty())
       return refuse(r, target, std::exchange(coarse_refusal, std::string()));
@@ -350,6 +388,9 @@ namespace rollnip
         r = contact.solve(theta);
         if (!r.converged)
           {
+            // Round-off, not the physics: no other theta0 does better.
+            if (r.message.find(stalled_on_round_off) != std::string::npos)
+              return stop_short(r, target, r.message);
             const double below = converged_below(theta);
             failed_at          = std::min(failed_at, theta);
             if (theta - below < IterationControls::step_back_resolution * theta)
@@ -368,10 +409,14 @@ namespace rollnip
                     << r.message << ")";
                 return refuse(r, target, why.str());
               }
+            const double next = below > 0 ? 0.5 * (below + theta) : 0.5 * theta;
+            if (next < min_step_back * first_theta)
+              return stop_short(
+                r, target, every_theta_failed(first_theta, theta, r.message));
             pcout << "Outer iteration " << it << ": theta0 = " << std::fixed
                   << std::setprecision(6) << theta * deg << " deg failed ("
                   << r.message << "); stepping back" << std::endl;
-            theta = below > 0 ? 0.5 * (below + theta) : 0.5 * theta;
+            theta = next;
             continue;
           }
         const double q = controlled(r);
@@ -380,18 +425,24 @@ namespace rollnip
               << std::setprecision(6) << theta * deg << " deg gives "
               << quantity() << " = " << q << unit() << " (target " << target
               << ")" << std::endl;
+        closest = std::min(closest, std::abs(q / target - 1));
         if (std::abs(q / target - 1) < c.control_tolerance)
           return r;
         if (q < target && theta >= theta_max * (1 - 1e-12))
           return refuse(r, target, beyond_mesh(theta_max));
         theta = next_theta(target, theta, std::min(failed_at, theta_max));
       }
-    return refuse(r,
-                  target,
-                  "the iteration on theta0 did not reach the control "
-                  "tolerance " +
-                    std::to_string(c.control_tolerance) + " in " +
-                    std::to_string(c.max_iterations) + " contact solves");
+    std::ostringstream why;
+    why << std::setprecision(3);
+    if (std::isfinite(closest))
+      why << "the iteration on theta0 stalled at |" << quantity()
+          << " / target - 1| = " << closest << " (Contact/Control tolerance "
+          << c.control_tolerance << ") after " << c.max_iterations
+          << " contact solves (Contact/Maximum iterations): raise either";
+    else
+      why << "no contact solve converged in the " << c.max_iterations
+          << " of Contact/Maximum iterations (the last: " << r.message << ")";
+    return stop_short(r, target, why.str());
   }
 
   ContactResult

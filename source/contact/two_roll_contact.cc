@@ -226,10 +226,20 @@ namespace rollnip
   bool
   TwoRollContact::refit_mate_mesh()
   {
+    // The nip at a given theta0 depends on where the mating roll's mesh is
+    // fitted: to the control tolerance, so that a load-controlled nip is
+    // the nip of its theta0 to that tolerance.
+    const double tolerance =
+      std::min(IterationControls::mate_refit_tolerance,
+               mate_parameters.contact.control_tolerance);
+    // Every process refits, or none (the refit is collective): rank 0's
+    // edge, so that round-off does not split them at a tight tolerance.
+    mate_edge_angle =
+      Utilities::MPI::broadcast(communicator(), mate_edge_angle, 0);
     if (!mate.has_nip_fitted_mesh() ||
         mate_refits >= IterationControls::max_mate_refits ||
         std::abs(mate_edge_angle - mate_fit_angle) <=
-          IterationControls::mate_refit_tolerance * mate_fit_angle)
+          tolerance * mate_fit_angle)
       return false;
     ++mate_refits;
     pcout << "  the mating roll's contact edge lies at "

@@ -3,6 +3,8 @@
 #include <rollnip/loading/pressure_load.h>
 #include <rollnip/output/silence_cerr.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -11,11 +13,41 @@
 
 namespace rollnip
 {
+  namespace
+  {
+    /// The first 60 characters of @p text, "..." if there is more.
+    std::string
+    first_line(const std::string &text)
+    {
+      constexpr std::size_t shown = 60;
+      std::string           line  = text.substr(0, shown);
+      std::replace(line.begin(), line.end(), '\n', ' ');
+      return text.size() > shown ? line + "..." : line;
+    }
+
+    /// muparser's @p reason in one line, with its expression length limit
+    /// spelled out for an expression of @p length characters.
+    std::string
+    one_line(std::string reason, const std::size_t length)
+    {
+      std::replace(reason.begin(), reason.end(), '\n', ' ');
+      while (!reason.empty() &&
+             std::isspace(static_cast<unsigned char>(reason.back())))
+        reason.pop_back();
+      const auto start = reason.find_first_not_of(' ');
+      reason           = start == std::string::npos ? "" : reason.substr(start);
+      if (length >= 20000)
+        reason += " (muparser takes at most 20000 characters without "
+                  "blanks; this one has " +
+                  std::to_string(length) + ")";
+      return reason.size() > 200 ? reason.substr(0, 200) + "..." : reason;
+    }
+  } // namespace
+
   PressureLoad::PressureLoad(const Parameters::Load     &load,
                              const Parameters::Geometry &geometry)
       : function(std::make_unique<FunctionParser<1>>(1))
       , sector_angle(geometry.sector_angle)
-      , outer_radius(geometry.outer_radius)
   {
     const std::map<std::string, double> constants = {
       {"p0", load.p0},
@@ -26,21 +58,43 @@ namespace rollnip
     // muparser's diagnostics go to std::cerr; the message below replaces
     // them with one line.
     const SilenceCerr silence;
+    // muparser ignores blanks but counts them against its limit of 20000
+    // characters.
+    std::string expression = load.pressure_function;
+    expression.erase(std::remove_if(expression.begin(),
+                                    expression.end(),
+                                    [](const unsigned char c) {
+                                      return std::isspace(c);
+                                    }),
+                     expression.end());
+    std::string reason;
     try
       {
-        function->initialize("theta", load.pressure_function, constants);
+        function->initialize("theta", expression, constants);
         // muparser reports some errors (unknown variables) only on use.
         const double f = function->value(Point<1>(0.));
         (void)f;
       }
+    catch (const ExceptionBase &e)
+      {
+        std::ostringstream info;
+        e.print_info(info);
+        reason = info.str();
+      }
+    catch (const std::exception &e)
+      {
+        reason = e.what();
+      }
     catch (...)
       {
-        AssertThrow(false,
-                    ExcMessage("Load/Pressure function: cannot parse '" +
-                               load.pressure_function +
-                               "' (a muparser expression in theta, with "
-                               "constants p0, theta0, R0, R1, pi)"));
+        reason = "unknown error";
       }
+    AssertThrow(reason.empty(),
+                ExcMessage("Load/Pressure function: cannot parse '" +
+                           first_line(load.pressure_function) +
+                           "' (a muparser expression in theta, with "
+                           "constants p0, theta0, R0, R1, pi): " +
+                           one_line(reason, expression.size())));
   }
 
   double
@@ -93,28 +147,34 @@ namespace rollnip
       }
   }
 
+  double
+  PressureLoad::loaded_angle() const
+  {
+    const std::vector<double> theta  = samples();
+    unsigned int              loaded = 0;
+    for (const double t : theta)
+      loaded += value(t) != 0;
+    return sector_angle * loaded / theta.size();
+  }
+
   std::string
   PressureLoad::describe() const
   {
     const std::vector<double> theta = samples();
-    double first = -1, last = -1, peak = 0, peak_at = 0, fx = 0, fy = 0;
-    for (unsigned int i = 0; i < theta.size(); ++i)
+    double                    first = -1, last = -1, peak = 0, peak_at = 0;
+    for (const double t : theta)
       {
-        const double f = value(theta[i]);
+        const double f = value(t);
         if (f != 0)
           {
-            first = first < 0 ? theta[i] : first;
-            last  = theta[i];
+            first = first < 0 ? t : first;
+            last  = t;
           }
         if (std::abs(f) > std::abs(peak))
           {
             peak    = f;
-            peak_at = theta[i];
+            peak_at = t;
           }
-        // Midpoint rule; the pressure pushes along -N on the arc.
-        const double w = sector_angle / theta.size() * outer_radius;
-        fx -= w * f * std::cos(theta[i]);
-        fy -= w * f * std::sin(theta[i]);
       }
     const double       deg = 180 / numbers::PI;
     std::ostringstream s;
@@ -124,8 +184,7 @@ namespace rollnip
     else
       s << "Load: pressure non-zero for theta in [" << first * deg << ", "
         << last * deg << "] deg, peak " << peak << " MPa at " << peak_at * deg
-        << " deg; resultant on the undeformed arc (" << fx << ", " << fy
-        << ") N/mm";
+        << " deg";
     return s.str();
   }
 } // namespace rollnip

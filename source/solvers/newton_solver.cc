@@ -2,6 +2,7 @@
 #include <rollnip/solvers/iteration_controls.h>
 #include <rollnip/solvers/newton_solver.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -29,8 +30,12 @@ namespace rollnip
   NewtonSolver::residual_round_off_floor() const
   {
     // Stresses of order G summed over the cells: I + grad u loses the
-    // digits of u next to 1, whatever the load.
-    const double G         = body.materials().surface_layer().shear_modulus();
+    // digits of u next to 1, whatever the load. In a layered cover the
+    // stiffest layer carries the largest stresses, and their round-off.
+    const MaterialTable &materials = body.materials();
+    double               G         = 0;
+    for (unsigned int l = 0; l < materials.n_layers(); ++l)
+      G = std::max(G, materials[l].shear_modulus());
     const double cell_size = std::sqrt(body.area() / body.n_cells());
     return IterationControls::round_off_factor *
            std::numeric_limits<double>::epsilon() * G * cell_size *

@@ -208,6 +208,10 @@ namespace
       std::to_string(refinements) +
       "\nend\n"
       "subsection Material\n set Theory = linear\nend\n"
+      // Assembled at load 0, so the load does not enter S; the default
+      // zone (10 deg) is narrower than two 15 deg cells at level 0, which
+      // the setup refuses: load the whole arc.
+      "subsection Load\n set Pressure function = p0\nend\n"
       "subsection Discretization\n set Element = " +
       element + "\nend\n");
     RollProblem problem(parameters, MPI_COMM_WORLD);

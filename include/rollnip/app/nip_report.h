@@ -47,7 +47,7 @@ namespace rollnip
    * The nip report (doc/engineering_inputs.md, section 4): per nip the
    * line load in Contact/Load unit, the full nip width 2b, u0, peak and
    * mean pressure, the dwell time at Contact/Surface speed and the modulus
-   * used (of the rolls of @p scene), printed and written to
+   * used (of the rolls of @p scene), printed (if @p print) and written to
    * @p top/nip_report.csv by rank 0 of @p communicator.
    */
   void
@@ -56,7 +56,8 @@ namespace rollnip
                    const SceneDescription          &scene,
                    const std::string               &top,
                    MPI_Comm                         communicator,
-                   const std::vector<BandWidths>   &band = {});
+                   const std::vector<BandWidths>   &band  = {},
+                   bool                             print = true);
 } // namespace rollnip
 
 #endif

@@ -24,10 +24,12 @@ namespace rollnip
    *    softer than a bonded layer, so both too wide);
    *  - a contact solve that fails is stepped back from, halfway to the
    *    largest converged theta0 below it;
-   *  - a target is refused only when theta0 would pass the largest the
-   *    mesh takes, or the contact solve keeps failing just above a
-   *    converged nip (the cover cannot carry more); the message names the
-   *    largest q reached.
+   *  - a target is refused as out of reach only when theta0 would pass the
+   *    largest the mesh takes, or the contact solve keeps failing just
+   *    above a converged nip (the cover cannot carry more); the message
+   *    names the largest q reached. An iteration that stalls (on
+   *    round-off, or within its Maximum iterations) or fails at every
+   *    theta0 down to a thousandth of the first says so instead.
    * One object per sweep: every converged nip is remembered.
    */
   class NipControl
@@ -134,6 +136,13 @@ namespace rollnip
     /// it times (failed / its theta0)^IterationControls::max_slope.
     bool
     beyond_steepest_rise(const double target, const double failed) const;
+    /// @p r marked failed, its message why the iteration stopped short of
+    /// @p target although the target may be within reach (it stalled on
+    /// round-off or ran out of contact solves, every theta0 failed).
+    ContactResult
+    stop_short(ContactResult      r,
+               const double       target,
+               const std::string &why) const;
 
     /// The largest converged theta0 below @p theta, 0 if there is none.
     double

@@ -38,16 +38,20 @@ namespace rollnip
     bool
     loads_beyond(const double theta) const;
 
-    /// Where f is non-zero on [0, sector angle], its peak and its
-    /// resultant on the undeformed outer arc, as one line for the screen:
-    /// an expression written in degrees shows as a load on the whole arc.
+    /// Where f is non-zero on [0, sector angle] and its peak, as the start
+    /// of a line for the screen: an expression written in degrees shows as
+    /// a load on the whole arc (check_applied_load() adds the resultant).
     std::string
     describe() const;
+
+    /// The angle [rad] of [0, sector angle] where f is non-zero (sampled
+    /// at 0.01 deg).
+    double
+    loaded_angle() const;
 
   private:
     std::unique_ptr<FunctionParser<1>> function;
     const double                       sector_angle;
-    const double                       outer_radius;
     /// The sample angles [rad] of check_finite() and describe().
     std::vector<double>
     samples() const;
