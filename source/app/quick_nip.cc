@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <rollnip/app/quick_nip.h>
+#include <rollnip/output/units.h>
 #include <rollnip/run_errors.h>
 
 #include <algorithm>
@@ -99,6 +100,8 @@ namespace rollnip
     }
   } // namespace
 
+  /// The quick form's flags with their units, converted with the
+  /// constants of the one unit table (output/units.h).
   namespace QuickUnits
   {
     Quantity
@@ -120,23 +123,25 @@ namespace rollnip
     double
     length_to_mm(const std::string &unit, const std::string &flag)
     {
-      static const std::map<std::string, double> table = {{"", 1.},
-                                                          {"mm", 1.},
-                                                          {"cm", 10.},
-                                                          {"m", 1000.},
-                                                          {"in", 25.4},
-                                                          {"inch", 25.4}};
+      static const std::map<std::string, double> table = {
+        {"", 1.},
+        {"mm", 1.},
+        {"cm", 10.},
+        {"m", 1000.},
+        {"in", Units::mm_per_inch},
+        {"inch", Units::mm_per_inch}};
       return factor(table, unit, flag, "mm, cm, m or in");
     }
 
     double
     speed_to_m_per_min(const std::string &unit, const std::string &flag)
     {
-      static const std::map<std::string, double> table = {{"m/min", 1.},
-                                                          {"mpm", 1.},
-                                                          {"m/s", 60.},
-                                                          {"fpm", 0.3048},
-                                                          {"ft/min", 0.3048}};
+      static const std::map<std::string, double> table = {
+        {"m/min", 1.},
+        {"mpm", 1.},
+        {"m/s", Units::m_per_min_per_m_per_s},
+        {"fpm", Units::m_per_min_per_fpm},
+        {"ft/min", Units::m_per_min_per_fpm}};
       return factor(table, unit, flag, "m/min, m/s or fpm");
     }
 
@@ -144,7 +149,7 @@ namespace rollnip
     modulus_to_mpa(const std::string &unit, const std::string &flag)
     {
       static const std::map<std::string, double> table = {
-        {"mpa", 1.}, {"n/mm2", 1.}, {"kpa", 1e-3}, {"psi", 6.894757293168e-3}};
+        {"mpa", 1.}, {"n/mm2", 1.}, {"kpa", 1e-3}, {"psi", Units::mpa_per_psi}};
       return factor(table, unit, flag, "MPa, kPa or psi");
     }
 
