@@ -372,6 +372,7 @@ namespace rollnip
     theta                     = std::min(theta, theta_max);
     const double  first_theta = theta;
     double        failed_at   = std::numeric_limits<double>::max();
+    unsigned int  n_retries   = 0;
     double        closest     = std::numeric_limits<double>::infinity();
     ContactResult r;
     if (!coarse_refusal.empty())
@@ -430,6 +431,14 @@ namespace rollnip
           return r;
         if (q < target && theta >= theta_max * (1 - 1e-12))
           return refuse(r, target, beyond_mesh(theta_max));
+        // Approach a failed theta0 from this converged nip rather than
+        // bisect towards it for good.
+        if (q < target && n_retries < IterationControls::max_failed_retries &&
+            theta >= IterationControls::failed_retry_fraction * failed_at)
+          {
+            failed_at = std::numeric_limits<double>::max();
+            ++n_retries;
+          }
         theta = next_theta(target, theta, std::min(failed_at, theta_max));
       }
     std::ostringstream why;

@@ -78,6 +78,13 @@ namespace rollnip
     /// A theta0 this close (relative) above a converged one that still
     /// fails means the cover cannot carry more.
     constexpr double step_back_resolution = 1e-2;
+    /// A theta0 whose contact solve failed from a state far from it (a
+    /// cold start) is tried again from the converged nips once they come
+    /// within this fraction of it, at most max_failed_retries times per
+    /// target: a stiff thin coat fails from the undeformed state at a nip
+    /// it reaches from a smaller one.
+    constexpr double       failed_retry_fraction = 0.5;
+    constexpr unsigned int max_failed_retries    = 6;
 
     // Two covered rolls (two_roll_contact.cc)
     /// The mating roll's first nip angle keeps its sine below this.
