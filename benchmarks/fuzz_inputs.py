@@ -545,6 +545,29 @@ def insanity(case_dir, stdout):
     for path in summaries + contacts:
         name = os.path.relpath(path, case_dir)
         kv = key_values(path)
+        bad = [k for k, v in kv.items() if number(v) is not None and not math.isfinite(number(v))]
+        if "total_force_N" in kv:
+            # The face model's summary (written only when it converged).
+            if bad:
+                problems.append(f"{name}: not finite: {', '.join(bad)}")
+            if not number(kv["total_force_N"]) or number(kv["total_force_N"]) <= 0:
+                problems.append(f"{name}: total_force_N = {kv['total_force_N']}")
+            continue
+        if kv.get("dimension") == "3":
+            # The 3D slice: converged, finite, P >= 0, the active set on
+            # the indenter (penetration a round-off of u0).
+            if kv.get("status") != "converged":
+                problems.append(f"{name}: status = {kv.get('status')}")
+            if bad:
+                problems.append(f"{name}: not finite: {', '.join(bad)}")
+            P = number(kv.get("nip_load_P_N_per_mm", "nan"))
+            u0 = number(kv.get("indentation_u0_mm", "nan"))
+            pen = number(kv.get("max_penetration_mm", "nan"))
+            if P is None or not P >= 0:
+                problems.append(f"{name}: nip_load_P_N_per_mm = {P}")
+            if pen is None or u0 is None or not pen <= 1e-3 * max(u0, 1e-300):
+                problems.append(f"{name}: max_penetration_mm = {pen} for u0 = {u0}")
+            continue
         if kv.get("status") != "converged":
             problems.append(f"{name}: status = {kv.get('status')}")
         bad = [k for k, v in kv.items() if number(v) is not None and not math.isfinite(number(v))]

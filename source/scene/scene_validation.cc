@@ -16,6 +16,9 @@ namespace rollnip
 {
   namespace
   {
+    /// The smallest core radius over the outer radius (validate_geometry()).
+    constexpr double min_core_fraction = 0.01;
+
     constexpr double degree = numbers::PI / 180.;
 
     std::string
@@ -32,6 +35,16 @@ namespace rollnip
       AssertThrow(g.inner_radius > 0,
                   ExcMessage(G + "Inner radius must be positive, got " +
                              Parameters::number(g.inner_radius) + " mm"));
+      // A core thinner than this is a solid roll, which the bonded core
+      // boundary cannot describe (its bond stresses are not finite).
+      AssertThrow(g.inner_radius >= min_core_fraction * g.outer_radius ||
+                    g.inner_radius >= g.outer_radius,
+                  ExcMessage(G + "Inner radius (" +
+                             Parameters::number(g.inner_radius) +
+                             " mm) is less than 1 % of the outer radius (" +
+                             Parameters::number(g.outer_radius) +
+                             " mm): the cover must be bonded to a core; a "
+                             "solid rubber roll is not modelled"));
       AssertThrow(g.inner_radius < g.outer_radius,
                   ExcMessage(
                     G + "Inner radius (" + Parameters::number(g.inner_radius) +
@@ -154,6 +167,23 @@ namespace rollnip
         << " is outside 5 mm to 5 m, the range of rolls (a unit "
            "mistake? lengths are in mm)"
         << std::endl;
+    }
+
+    /// A total force on a face length outside 10 mm to 20 m most likely has
+    /// the length in another unit than mm: one warning line on rank 0.
+    void
+    warn_face_length(const Parameters::Contact &c)
+    {
+      const double L = c.load_unit.face_length;
+      if (!c.load_unit.is_total_force() || (L >= 10 && L <= 20000) ||
+          Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+        return;
+      std::cerr << "rollnip: warning: Contact/Face length = "
+                << Parameters::number(L)
+                << " mm is outside 10 mm to 20 m, the range of roll faces "
+                   "(a unit mistake? lengths are in mm); the line load is "
+                   "the force over it"
+                << std::endl;
     }
 
     /// The reach the first roll's and the mating roll's meshes need for
@@ -318,6 +348,7 @@ namespace rollnip
   validate_rolls(const Parameters::AllParameters &p)
   {
     const double cells = validate_roll(p, "", nip_reach(p, false));
+    warn_face_length(p.contact);
     if (!p.mating_roll.covered)
       {
         check_cost(p, cells);

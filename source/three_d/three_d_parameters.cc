@@ -63,8 +63,10 @@ namespace rollnip
       approach_step         = prm.get_double("Approach step");
       max_newton_iterations = prm.get_integer("Max Newton iterations");
       prm.leave_subsection();
-      AssertThrow(slice_thickness > 0,
-                  ExcMessage("Three d/Slice thickness must be positive"));
+      AssertThrow(slice_thickness > 0 && slice_thickness <= 1e5,
+                  ExcMessage("Three d/Slice thickness must lie in (0, 1e5] "
+                             "mm, got " +
+                             number(slice_thickness) + " mm"));
       AssertThrow(approach_step > 0,
                   ExcMessage("Three d/Approach step must be positive"));
     }
