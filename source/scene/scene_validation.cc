@@ -326,6 +326,7 @@ namespace rollnip
                                  " mm thick): the core would touch the "
                                  "mating surface"));
       }
+    warn_face_length(p.contact);
   }
 
   double
@@ -348,7 +349,6 @@ namespace rollnip
   validate_rolls(const Parameters::AllParameters &p)
   {
     const double cells = validate_roll(p, "", nip_reach(p, false));
-    warn_face_length(p.contact);
     if (!p.mating_roll.covered)
       {
         check_cost(p, cells);
