@@ -635,6 +635,45 @@ namespace rollnip
       });
     }
 
+    /// The linear-theory companion of nip @p n (0-based) of a sweep, at
+    /// the nonlinear nip's theta0 in @p row: solved into row.linear,
+    /// written to NIP/linear (NIP the nip's directory relative to the
+    /// output directory, VTU its solution file name) and added to
+    /// @p linear_pvd if given.
+    void
+    solve_linear_companion(Scene                           &linear_scene,
+                           const SceneDescription          &description,
+                           const Parameters::AllParameters &parameters,
+                           const unsigned int               n,
+                           const std::string               &nip,
+                           const std::string               &vtu,
+                           SweepPvd                        *linear_pvd,
+                           NipRow                          &row)
+    {
+      RollProblem      &linear         = linear_scene.roll();
+      NipSolver        &linear_contact = linear_scene.nip_solver();
+      const std::string dir =
+        (nip == "." ? parameters.output.directory
+                    : parameters.output.directory + "/" + nip) +
+        "/linear";
+      row.linear = linear_contact.solve(row.nonlinear.theta0);
+      linear.set_output_directory(dir);
+      write_nip(linear, row.linear, dir, true);
+      linear_contact.write_results(row.linear,
+                                   dir,
+                                   n + 1,
+                                   linear_pvd && row.linear.converged);
+      if (!linear_pvd || !row.linear.converged)
+        return;
+      linear.write_vtu(n + 1, 1.);
+      linear_pvd->add(sweep_time(parameters, row.nonlinear),
+                      nip + "/linear" + vtu);
+      if (description.covered_mate())
+        linear_pvd->add(sweep_time(parameters, row.nonlinear),
+                        nip + "/linear/mating_roll" + vtu,
+                        1);
+    }
+
     /// Solves the nips of Contact/Values in turn, evaluates and writes
     /// each, and adds the converged ones to @p rows, with their linear
     /// companions if @p linear is given and their error estimates if
@@ -723,27 +762,14 @@ namespace rollnip
             }
 
           if (linear_scene)
-            {
-              RollProblem *linear         = &linear_scene->roll();
-              NipSolver   *linear_contact = &linear_scene->nip_solver();
-              row.linear = linear_contact->solve(row.nonlinear.theta0);
-              linear->set_output_directory(dir + "/linear");
-              write_nip(*linear, row.linear, dir + "/linear", true);
-              linear_contact->write_results(row.linear,
-                                            dir + "/linear",
-                                            n + 1,
-                                            series && row.linear.converged);
-              if (series && row.linear.converged)
-                {
-                  linear->write_vtu(n + 1, 1.);
-                  linear_pvd.add(sweep_time(parameters, row.nonlinear),
-                                 nip + "/linear" + vtu);
-                  if (scene.description.covered_mate())
-                    linear_pvd.add(sweep_time(parameters, row.nonlinear),
-                                   nip + "/linear/mating_roll" + vtu,
-                                   1);
-                }
-            }
+            solve_linear_companion(*linear_scene,
+                                   scene.description,
+                                   parameters,
+                                   n,
+                                   nip,
+                                   vtu,
+                                   series ? &linear_pvd : nullptr,
+                                   row);
           // A signal has said that this nip is not in the tables.
           arm_interrupt_line("", "");
           if (interrupt_requested(comm))
