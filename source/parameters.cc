@@ -6,7 +6,6 @@
 #include <rollnip/engineering_inputs.h>
 #include <rollnip/face/face_parameters.h>
 #include <rollnip/ignored_entries.h>
-#include <rollnip/three_d/three_d_parameters.h>
 #include <rollnip/loading/pressure_load.h>
 #include <rollnip/material/layer_order.h>
 #include <rollnip/output/units.h>
@@ -15,6 +14,7 @@
 #include <rollnip/rolling/rolling_parameters.h>
 #include <rollnip/run_errors.h>
 #include <rollnip/scene/scene_validation.h>
+#include <rollnip/three_d/three_d_parameters.h>
 
 #include <filesystem>
 #include <fstream>
