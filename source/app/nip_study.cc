@@ -674,6 +674,45 @@ namespace rollnip
                         1);
     }
 
+    /// Writes the files of nip @p number of a sweep into @p dir: its VTU,
+    /// summary (with the error estimate and the rolling numbers), contact
+    /// tables and surface pieces; @p nip_seconds is its solve's wall time.
+    void
+    write_nip_files(Scene                           &scene,
+                    const Parameters::AllParameters &parameters,
+                    const NipRow                    &row,
+                    const unsigned int               number,
+                    const std::string               &dir,
+                    const double                     nip_seconds)
+    {
+      RollProblem &nonlinear = scene.roll();
+      NipSolver   &contact   = scene.nip_solver();
+      nonlinear.set_output_directory(dir);
+      if (parameters.output.write_vtu)
+        nonlinear.write_vtu(number, 1.);
+      // The nip's own solve time beside the post-process's, for the
+      // cost of the rolling loss (benchmarks/rolling_cost.sh).
+      const std::string rolling_text =
+        row.rolling.available
+          ? rolling_lines(row.rolling) +
+              "nip_solve_wall_time_s = " + std::to_string(nip_seconds) + '\n'
+          : "";
+      write_nip(nonlinear,
+                row.nonlinear,
+                dir,
+                false,
+                row.nonlinear.converged
+                  ? error_lines(row, parameters) + rolling_text
+                  : "");
+      if (!rolling_text.empty())
+        append_to_summary(dir, rolling_text, nonlinear.communicator());
+      contact.write_results(row.nonlinear,
+                            dir,
+                            number,
+                            parameters.output.write_vtu);
+      write_nip_pieces(scene, row.nonlinear, dir);
+    }
+
     /// Solves the nips of Contact/Values in turn, evaluates and writes
     /// each, and adds the converged ones to @p rows, with their linear
     /// companions if @p linear is given and their error estimates if
@@ -688,7 +727,6 @@ namespace rollnip
                std::vector<NipRow>             &rows)
     {
       RollProblem       &nonlinear = scene.roll();
-      NipSolver         &contact   = scene.nip_solver();
       const auto        &values    = parameters.contact.values;
       const bool         sweep     = values.size() > 1;
       const std::string &top       = parameters.output.directory;
@@ -726,31 +764,7 @@ namespace rollnip
               if (rolling && rolling->enabled)
                 evaluate_rolling_nip(scene, parameters, *rolling, dir, row);
             }
-          nonlinear.set_output_directory(dir);
-          if (parameters.output.write_vtu)
-            nonlinear.write_vtu(n + 1, 1.);
-          // The nip's own solve time beside the post-process's, for the
-          // cost of the rolling loss (benchmarks/rolling_cost.sh).
-          const std::string rolling_text =
-            row.rolling.available
-              ? rolling_lines(row.rolling) +
-                  "nip_solve_wall_time_s = " + std::to_string(nip_seconds) +
-                  '\n'
-              : "";
-          write_nip(nonlinear,
-                    row.nonlinear,
-                    dir,
-                    false,
-                    row.nonlinear.converged
-                      ? error_lines(row, parameters) + rolling_text
-                      : "");
-          if (!rolling_text.empty())
-            append_to_summary(dir, rolling_text, nonlinear.communicator());
-          contact.write_results(row.nonlinear,
-                                dir,
-                                n + 1,
-                                parameters.output.write_vtu);
-          write_nip_pieces(scene, row.nonlinear, dir);
+          write_nip_files(scene, parameters, row, n + 1, dir, nip_seconds);
           if (series && row.nonlinear.converged)
             add_to_sweep(
               pvd, parameters, scene.description, row.nonlinear, nip, vtu);
