@@ -106,6 +106,43 @@ namespace rollnip
                 }
           }
     }
+
+    /// The cell values and the cell system of the conduction problem, one
+    /// per loop over the cells (the solve and the core's flux use the same).
+    struct ThermalScratch
+    {
+      ThermalScratch(const Mapping<dim> &mapping, const FiniteElement<dim> &fe)
+          : quadrature(fe.degree + 2)
+          , fv(mapping,
+               fe,
+               quadrature,
+               update_values | update_gradients | update_quadrature_points |
+                 update_JxW_values)
+          , ffv(mapping,
+                fe,
+                QGauss<dim - 1>(fe.degree + 2),
+                update_values | update_JxW_values)
+          , A(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
+          , f(fe.n_dofs_per_cell())
+          , indices(fe.n_dofs_per_cell())
+      {}
+
+      /// The cell matrix and right-hand side of @p cell, and its DoFs.
+      void
+      assemble(const DoFHandler<dim>::active_cell_iterator &cell,
+               const ThermalData                           &data)
+      {
+        cell_system(cell, fv, ffv, data, A, f);
+        cell->get_dof_indices(indices);
+      }
+
+      const QGauss<dim>                    quadrature;
+      FEValues<dim>                        fv;
+      FEFaceValues<dim>                    ffv;
+      FullMatrix<double>                   A;
+      Vector<double>                       f;
+      std::vector<types::global_dof_index> indices;
+    };
   } // namespace
 
   CoverTemperature::CoverTemperature(
@@ -194,33 +231,20 @@ namespace rollnip
               const ThermalData                   &data,
               const AffineConstraints<double>     &core)
     {
-      const auto                          &fe = dofs.get_fe();
-      const QGauss<dim>                    quadrature(fe.degree + 2);
-      FEValues<dim>                        fv(mapping,
-                       fe,
-                       quadrature,
-                       update_values | update_gradients |
-                         update_quadrature_points | update_JxW_values);
-      FEFaceValues<dim>                    ffv(mapping,
-                            fe,
-                            QGauss<dim - 1>(fe.degree + 2),
-                            update_values | update_JxW_values);
-      const unsigned int                   n = fe.n_dofs_per_cell();
-      FullMatrix<double>                   A(n, n);
-      Vector<double>                       f(n), Tc(n), r(n);
-      std::vector<types::global_dof_index> indices(n);
-      TrilinosWrappers::MPI::Vector        residual(dofs.locally_owned_dofs(),
+      ThermalScratch                scratch(mapping, dofs.get_fe());
+      const unsigned int            n = scratch.f.size();
+      Vector<double>                Tc(n), r(n);
+      TrilinosWrappers::MPI::Vector residual(dofs.locally_owned_dofs(),
                                              dofs.get_communicator());
       for (const auto &cell : dofs.active_cell_iterators())
         if (cell->is_locally_owned())
           {
-            cell_system(cell, fv, ffv, data, A, f);
-            cell->get_dof_indices(indices);
+            scratch.assemble(cell, data);
             for (unsigned int i = 0; i < n; ++i)
-              Tc(i) = T[indices[i]];
-            A.vmult(r, Tc);
-            r -= f;
-            residual.add(indices, r);
+              Tc(i) = T[scratch.indices[i]];
+            scratch.A.vmult(r, Tc);
+            r -= scratch.f;
+            residual.add(scratch.indices, r);
           }
       residual.compress(VectorOperation::add);
       double flux = 0;
@@ -257,30 +281,18 @@ namespace rollnip
     matrix.reinit(owned, owned, dsp, comm);
     TrilinosWrappers::MPI::Vector rhs(owned, comm), x(owned, comm);
 
-    const ThermalData                    data{source, rolling};
-    const QGauss<dim>                    quadrature(fe.degree + 2);
-    FEValues<dim>                        fv(mapping,
-                     fe,
-                     quadrature,
-                     update_values | update_gradients |
-                       update_quadrature_points | update_JxW_values);
-    FEFaceValues<dim>                    ffv(mapping,
-                          fe,
-                          QGauss<dim - 1>(fe.degree + 2),
-                          update_values | update_JxW_values);
-    const unsigned int                   n = fe.n_dofs_per_cell();
-    FullMatrix<double>                   A(n, n);
-    Vector<double>                       f(n);
-    std::vector<types::global_dof_index> indices(n);
-    double                               generated = 0;
+    const ThermalData data{source, rolling};
+    ThermalScratch    scratch(mapping, fe);
+    double            generated = 0;
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          cell_system(cell, fv, ffv, data, A, f);
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
-            generated += data.s(cell, quadrature.point(q)) * fv.JxW(q);
-          cell->get_dof_indices(indices);
-          constraints.distribute_local_to_global(A, f, indices, matrix, rhs);
+          scratch.assemble(cell, data);
+          for (unsigned int q = 0; q < scratch.quadrature.size(); ++q)
+            generated +=
+              data.s(cell, scratch.quadrature.point(q)) * scratch.fv.JxW(q);
+          constraints.distribute_local_to_global(
+            scratch.A, scratch.f, scratch.indices, matrix, rhs);
         }
     matrix.compress(VectorOperation::add);
     rhs.compress(VectorOperation::add);
