@@ -373,20 +373,23 @@ namespace rollnip
        */
       void
       validate() const;
-      /// Geometry, material and load (validate()).
+      /// The scene as a whole: the load expression on the arc, sector
+      /// studies on a builtin mesh, contact entries without a mode (each
+      /// roll's own entries: validate_rolls(), scene/scene_validation.h).
       void
       validate_scene() const;
       /// A contact scene's conditions and values (validate()).
       void
       validate_contact() const;
-      /// Nip fitting against the mesh and the values (validate()).
+      /// Nip fitting against the contact mode and values (each roll's mesh
+      /// entries: validate_rolls(), scene/scene_validation.h).
       void
       validate_mesh() const;
       /// The constants and thicknesses of the layers of the cover.
       void
       validate_material() const;
-      /// The covered mating roll's scene, its messages prefixed "Mating
-      /// roll/" (validate()).
+      /// That a covered mating roll has a contact scene (its own entries:
+      /// validate_rolls(), with messages prefixed "Mating roll/").
       void
       validate_mating_roll() const;
       /// Output directory, the number of nips and the size (validate()).
