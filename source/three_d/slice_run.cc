@@ -109,6 +109,13 @@ namespace rollnip
                            for (const auto &[z, q] : profile)
                              out << z << ',' << q << '\n';
                          });
+        const three_d::CoreDeflection core(three_d.core_deflection);
+        if (!core.is_zero())
+          three_d::write_core_profile(directory +
+                                        "/core_deflection_along_axis.csv",
+                                      profile,
+                                      core,
+                                      nips.back().u0);
         write_table(directory + "/slice_3d.csv", nips, seconds);
         write_summary(directory + "/summary.txt",
                       body,

@@ -11,6 +11,7 @@
 
 #include <rollnip/contact/counter_surface.h>
 #include <rollnip/parameters.h>
+#include <rollnip/three_d/core_deflection.h>
 #include <rollnip/three_d/mooney_rivlin_law.h>
 #include <rollnip/three_d/slice_mesh.h>
 #include <rollnip/three_d/three_d_parameters.h>
@@ -151,6 +152,20 @@ namespace rollnip
       TrilinosWrappers::MPI::Vector  reactions;  ///< unconstrained, ghosted
       double                         residual_u = 0, residual_q = 0;
       double                         current_u0 = 0;
+
+      // The prescribed core deflection (slice_core.cc).
+      /// The bonded nodes' x dofs at R1 and their z [mm].
+      void
+      collect_bonded_nodes();
+      /// The bonded nodes' u_x = -core_factor v(z) as inhomogeneities of
+      /// the Newton update in @p c (their lines are in it already).
+      void
+                     add_core_displacement(AffineConstraints<double> &c) const;
+      CoreDeflection core;
+      std::map<types::global_dof_index, double> bonded; ///< x dof -> v(z)
+      double core_amplitude = 0; ///< max |v| over the bonded nodes [mm]
+      /// The share of v applied so far: ramped to 1 with the approach.
+      double core_factor = 0;
     };
   } // namespace three_d
 } // namespace rollnip
