@@ -60,6 +60,7 @@ namespace rollnip
       setup_system();
       collect_surface_nodes();
       collect_bonded_nodes();
+      collect_surface_faces();
     }
 
     void

@@ -38,6 +38,32 @@ namespace rollnip
       double       max_penetration = 0; ///< max(-gap) over the surface [mm]
     };
 
+    /// Where and how hard the indenter presses (slice_patch.cc).
+    struct ContactPatch
+    {
+      /// Largest nodal contact pressure: the normal contact force of an
+      /// active node over its share of the deformed outer surface [MPa].
+      double peak_pressure = 0;
+      double peak_z        = 0; ///< z of that node [mm]
+      /// Deformed x2 of the last active node in the plane z = 0 [mm].
+      double half_chord_middle = 0;
+      /// The same in the plane z = Slice thickness [mm].
+      double half_chord_far = 0;
+      /// Line load at z = 0 (consistent recovery) [N/mm].
+      double line_load_middle = 0;
+    };
+
+    struct SliceNip;
+
+    /// @p patch of the last approach @p nip as "key = value" lines at
+    /// @p path, with the face's total force for a face of 2 L (a symmetry
+    /// plane at z = 0) [N].
+    void
+    write_contact_patch(const std::string        &path,
+                        const ContactPatch       &patch,
+                        const SliceNip           &nip,
+                        const Parameters::ThreeD &three_d);
+
     /**
      * The cover as a 3D body (slice_mesh.h): Q1-P0 (FE_Q(1)^3 x FE_DGP(0)),
      * total Lagrangian, MooneyRivlinLaw<3>, pressed by the rigid indenter
@@ -68,6 +94,10 @@ namespace rollnip
       /// active nodes over the plane's share of the slice length.
       std::vector<std::pair<double, double>>
       line_load_profile() const;
+
+      /// Peak pressure and the contact's extent at the last approach.
+      ContactPatch
+      contact_patch() const;
 
       /// Displacement, q, J, Cauchy stress and contact status as
       /// DIRECTORY/NAME_COUNTER.pvtu with one .vtu per process.
@@ -166,6 +196,13 @@ namespace rollnip
       double core_amplitude = 0; ///< max |v| over the bonded nodes [mm]
       /// The share of v applied so far: ramped to 1 with the approach.
       double core_factor = 0;
+
+      // The contact patch (slice_patch.cc).
+      /// The x dofs of the four vertices of every locally owned face on
+      /// the outer surface.
+      void
+      collect_surface_faces();
+      std::vector<std::array<types::global_dof_index, 4>> surface_faces;
     };
   } // namespace three_d
 } // namespace rollnip
