@@ -14,8 +14,9 @@ with l = 0.63 a (Face/Non-local length factor), a the 2D half-chord at U0.
 
 Usage: python3 benchmarks/core_ripple.py [LEVEL]   (level 0: about a
 minute; level 1: several minutes). Uses build/rollnip or $ROLLNIP_BIN;
-$LAYERS (cells per half wavelength, 8) and $WAVELENGTHS ("2000 400 120 60
-30 15" mm) override the defaults.
+$LAYERS (cells per half wavelength, 8), $WAVELENGTHS ("2000 400 120 60
+30 15" mm), $U0 (1 mm), $AMPLITUDE (0.2 mm) and $HALF_CHORD (the 2D a at
+U0, 7.323037 mm) override the defaults.
 """
 
 import csv
@@ -28,9 +29,11 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ROLLNIP = os.environ.get("ROLLNIP_BIN", os.path.join(ROOT, "build", "rollnip"))
-U0 = 1.0          # mean approach [mm]
-A = 0.2           # ripple amplitude [mm]
-A_2D = 7.323037   # 2D half-chord at U0 [mm] (Q2-P1, level 2, run below)
+U0 = float(os.environ.get("U0", "1"))        # mean approach [mm]
+A = float(os.environ.get("AMPLITUDE", "0.2"))  # ripple amplitude [mm]
+# The 2D half-chord at U0 [mm]: Q2-P1 on the nip-fitted mesh (level 2 at
+# 1 mm; at another U0 give it as $HALF_CHORD).
+A_2D = float(os.environ.get("HALF_CHORD", "7.323037"))
 FACTOR = 0.63     # Face/Non-local length factor (default)
 WAVELENGTHS = [float(x) for x in os.environ.get(
     "WAVELENGTHS", "2000 400 120 60 30 15").split()]  # [mm]
