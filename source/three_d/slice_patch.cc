@@ -48,9 +48,9 @@ namespace rollnip
       TrilinosWrappers::MPI::Vector area(owned, relevant, communicator);
       area = owned_area;
 
-      ContactPatch patch;
-      double       peak = 0, peak_z = 0;
-      const double L = three_d.slice_thickness;
+      ContactPatch                           patch;
+      std::vector<std::pair<double, double>> pressures; ///< (p, z), owned
+      const double                           L = three_d.slice_thickness;
       for (const auto x_dof : active)
         {
           const SurfaceNode &node = surface.at(x_dof);
@@ -65,16 +65,20 @@ namespace rollnip
           double               force = 0;
           for (unsigned int c = 0; c < dim; ++c)
             force += n[c] * reactions[node.dofs[c]];
-          if (force / area[x_dof] > peak)
-            {
-              peak   = force / area[x_dof];
-              peak_z = node.X[2];
-            }
+          pressures.emplace_back(force / area[x_dof], node.X[2]);
         }
-      patch.peak_pressure = Utilities::MPI::max(peak, communicator);
+      for (const auto &[p, z] : pressures)
+        patch.peak_pressure = std::max(patch.peak_pressure, p);
+      patch.peak_pressure =
+        Utilities::MPI::max(patch.peak_pressure, communicator);
+      // Nodes equal to round-off (a plane-strain slice) tie: the smallest
+      // z of the ties, so that every partition names the same node.
+      double z_min = std::numeric_limits<double>::max();
+      for (const auto &[p, z] : pressures)
+        if (p >= (1 - 1e-9) * patch.peak_pressure)
+          z_min = std::min(z_min, z);
       patch.peak_z =
-        Utilities::MPI::max(peak == patch.peak_pressure ? peak_z : -1.,
-                            communicator);
+        patch.peak_pressure > 0 ? Utilities::MPI::min(z_min, communicator) : 0.;
       patch.half_chord_middle =
         Utilities::MPI::max(patch.half_chord_middle, communicator);
       patch.half_chord_far =

@@ -53,8 +53,6 @@ namespace rollnip
       double line_load_middle = 0;
     };
 
-    struct SliceNip;
-
     /// @p patch of the last approach @p nip as "key = value" lines at
     /// @p path, with the face's total force for a face of 2 L (a symmetry
     /// plane at z = 0) [N].
@@ -184,16 +182,18 @@ namespace rollnip
       double                         current_u0 = 0;
 
       // The prescribed core deflection (slice_core.cc).
-      /// The bonded nodes' x dofs at R1 and their z [mm].
+      /// The bonded nodes' x dofs at R1 and their v(z) [mm].
       void
       collect_bonded_nodes();
       /// The bonded nodes' u_x = -core_factor v(z) as inhomogeneities of
       /// the Newton update in @p c (their lines are in it already).
       void
-                     add_core_displacement(AffineConstraints<double> &c) const;
-      CoreDeflection core;
+      add_core_displacement(AffineConstraints<double> &c) const;
+
+      CoreDeflection                            core;
       std::map<types::global_dof_index, double> bonded; ///< x dof -> v(z)
-      double core_amplitude = 0; ///< max |v| over the bonded nodes [mm]
+      /// max |v| over the bonded nodes [mm].
+      double core_amplitude = 0;
       /// The share of v applied so far: ramped to 1 with the approach.
       double core_factor = 0;
 
