@@ -68,6 +68,8 @@ namespace rollnip
           c.clear();
           c.reinit(relevant);
           make_support_constraints(c);
+          if (!homogeneous)
+            add_core_displacement(c);
           // The active node's update keeps it on the linearised indenter:
           // n . du = -g, solved for the dominant in-plane component.
           for (const types::global_dof_index x_dof : active)
@@ -161,15 +163,19 @@ namespace rollnip
     SliceNip
     SliceBody::solve(const double u0)
     {
+      // The core's deflection is ramped in with the first approach.
+      const double       core_left = core_amplitude * (1. - core_factor);
       const unsigned int n_steps =
         std::max(1.,
-                 std::ceil(std::abs(u0 - current_u0) / three_d.approach_step -
+                 std::ceil(std::max(std::abs(u0 - current_u0), core_left) /
+                             three_d.approach_step -
                            1e-9));
-      const double start = current_u0;
+      const double start = current_u0, core_start = core_factor;
       unsigned int steps = 0;
       for (unsigned int s = 1; s <= n_steps; ++s)
         {
           const double u = start + (u0 - start) * s / n_steps;
+          core_factor    = core_start + (1. - core_start) * s / n_steps;
           AssertThrow(newton(u, steps),
                       ExcMessage("Three d: Newton did not converge at u0 = " +
                                  std::to_string(u) +

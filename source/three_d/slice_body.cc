@@ -41,6 +41,7 @@ namespace rollnip
               parameters.material.layer_C2.back())
         , indenter(make_counter_surface(parameters.geometry.outer_radius,
                                         parameters.contact.indenter_radius))
+        , core(three_d.core_deflection)
     {
       AssertThrow(parameters.discretization.element ==
                     Parameters::Element::q1_p0,
@@ -58,6 +59,8 @@ namespace rollnip
       active_set_scale = law.shear_modulus() * three_d.slice_thickness;
       setup_system();
       collect_surface_nodes();
+      collect_bonded_nodes();
+      collect_surface_faces();
     }
 
     void

@@ -99,7 +99,8 @@ namespace rollnip
         if (parameters.output.write_vtu)
           body.write_vtu(directory, "slice_3d", nips.size() - 1);
       }
-    const auto profile = body.line_load_profile();
+    const auto                  profile = body.line_load_profile();
+    const three_d::ContactPatch patch   = body.contact_patch();
     if (root)
       {
         write_atomically(directory + "/line_load_along_axis.csv",
@@ -109,6 +110,17 @@ namespace rollnip
                            for (const auto &[z, q] : profile)
                              out << z << ',' << q << '\n';
                          });
+        three_d::write_contact_patch(directory + "/contact_patch.txt",
+                                     patch,
+                                     nips.back(),
+                                     three_d);
+        const three_d::CoreDeflection core(three_d.core_deflection);
+        if (!core.is_zero())
+          three_d::write_core_profile(directory +
+                                        "/core_deflection_along_axis.csv",
+                                      profile,
+                                      core,
+                                      nips.back().u0);
         write_table(directory + "/slice_3d.csv", nips, seconds);
         write_summary(directory + "/summary.txt",
                       body,

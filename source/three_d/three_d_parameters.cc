@@ -1,5 +1,6 @@
 #include <rollnip/parameter_entries.h>
 #include <rollnip/parameters.h>
+#include <rollnip/three_d/core_deflection.h>
 #include <rollnip/three_d/three_d_parameters.h>
 
 namespace rollnip
@@ -49,6 +50,16 @@ namespace rollnip
                          Patterns::Integer(1, 1000),
                          "Semismooth Newton iterations per load step (the "
                          "active set and the displacements together)");
+
+      declare_documented(prm,
+                         "Core deflection",
+                         "0",
+                         Patterns::Anything(),
+                         "The rigid core's bending line v(z) [mm], positive "
+                         "away from the nip (the face model's deflection): "
+                         "a muparser expression in z [mm] with the constant "
+                         "pi. The bonded nodes at R1 move by -v(z) along "
+                         "x1, so the local approach at z is u0 - v(z)");
       prm.leave_subsection();
     }
 
@@ -62,6 +73,9 @@ namespace rollnip
       fix_far_face          = prm.get("Far face") == "fixed axial";
       approach_step         = prm.get_double("Approach step");
       max_newton_iterations = prm.get_integer("Max Newton iterations");
+      core_deflection       = prm.get("Core deflection");
+      // Parses it: a bad expression is refused here, naming the entry.
+      const three_d::CoreDeflection check_core(core_deflection);
       prm.leave_subsection();
       AssertThrow(slice_thickness > 0 && slice_thickness <= 1e5,
                   ExcMessage("Three d/Slice thickness must lie in (0, 1e5] "

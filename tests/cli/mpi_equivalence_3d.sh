@@ -73,5 +73,16 @@ for f in summary_compared.txt slice_compared.csv; do
     fail "$f differs between 1 and 2 MPI processes"
   fi
 done
+# The outputs a 3D scene adds: the contact patch, and the line load beside
+# the core's deflection.
+for f in contact_patch.txt core_deflection_along_axis.csv; do
+  [ -f "out_serial/$f" ] || continue
+  if "$numdiff" --quiet -r 1e-8 -a 1e-12 -s $' \t\n,=' "out_serial/$f" "out_parallel/$f" > /dev/null; then
+    pass "$f: serial and 2 processes agree (rel 1e-8)"
+  else
+    "$numdiff" -r 1e-8 -a 1e-12 -s $' \t\n,=' "out_serial/$f" "out_parallel/$f" | tail -n 20 || true
+    fail "$f differs between 1 and 2 MPI processes"
+  fi
+done
 echo "serial:   P = $(summary_value out_serial/summary.txt nip_load_P_N_per_mm) N/mm"
 echo "parallel: P = $(summary_value out_parallel/summary.txt nip_load_P_N_per_mm) N/mm"

@@ -11,6 +11,7 @@
 
 #include <rollnip/contact/counter_surface.h>
 #include <rollnip/parameters.h>
+#include <rollnip/three_d/core_deflection.h>
 #include <rollnip/three_d/mooney_rivlin_law.h>
 #include <rollnip/three_d/slice_mesh.h>
 #include <rollnip/three_d/three_d_parameters.h>
@@ -36,6 +37,30 @@ namespace rollnip
       unsigned int newton_steps    = 0; ///< over all load steps
       double       max_penetration = 0; ///< max(-gap) over the surface [mm]
     };
+
+    /// Where and how hard the indenter presses (slice_patch.cc).
+    struct ContactPatch
+    {
+      /// Largest nodal contact pressure: the normal contact force of an
+      /// active node over its share of the deformed outer surface [MPa].
+      double peak_pressure = 0;
+      double peak_z        = 0; ///< z of that node [mm]
+      /// Deformed x2 of the last active node in the plane z = 0 [mm].
+      double half_chord_middle = 0;
+      /// The same in the plane z = Slice thickness [mm].
+      double half_chord_far = 0;
+      /// Line load at z = 0 (consistent recovery) [N/mm].
+      double line_load_middle = 0;
+    };
+
+    /// @p patch of the last approach @p nip as "key = value" lines at
+    /// @p path, with the face's total force for a face of 2 L (a symmetry
+    /// plane at z = 0) [N].
+    void
+    write_contact_patch(const std::string        &path,
+                        const ContactPatch       &patch,
+                        const SliceNip           &nip,
+                        const Parameters::ThreeD &three_d);
 
     /**
      * The cover as a 3D body (slice_mesh.h): Q1-P0 (FE_Q(1)^3 x FE_DGP(0)),
@@ -67,6 +92,10 @@ namespace rollnip
       /// active nodes over the plane's share of the slice length.
       std::vector<std::pair<double, double>>
       line_load_profile() const;
+
+      /// Peak pressure and the contact's extent at the last approach.
+      ContactPatch
+      contact_patch() const;
 
       /// Displacement, q, J, Cauchy stress and contact status as
       /// DIRECTORY/NAME_COUNTER.pvtu with one .vtu per process.
@@ -151,6 +180,29 @@ namespace rollnip
       TrilinosWrappers::MPI::Vector  reactions;  ///< unconstrained, ghosted
       double                         residual_u = 0, residual_q = 0;
       double                         current_u0 = 0;
+
+      // The prescribed core deflection (slice_core.cc).
+      /// The bonded nodes' x dofs at R1 and their v(z) [mm].
+      void
+      collect_bonded_nodes();
+      /// The bonded nodes' u_x = -core_factor v(z) as inhomogeneities of
+      /// the Newton update in @p c (their lines are in it already).
+      void
+      add_core_displacement(AffineConstraints<double> &c) const;
+
+      CoreDeflection                            core;
+      std::map<types::global_dof_index, double> bonded; ///< x dof -> v(z)
+      /// max |v| over the bonded nodes [mm].
+      double core_amplitude = 0;
+      /// The share of v applied so far: ramped to 1 with the approach.
+      double core_factor = 0;
+
+      // The contact patch (slice_patch.cc).
+      /// The x dofs of the four vertices of every locally owned face on
+      /// the outer surface.
+      void
+      collect_surface_faces();
+      std::vector<std::array<types::global_dof_index, 4>> surface_faces;
     };
   } // namespace three_d
 } // namespace rollnip

@@ -27,6 +27,10 @@ namespace rollnip
       double       approach_step; ///< largest u0 increment per load step [mm]
       unsigned int max_newton_iterations;
 
+      /// The rigid core's bending line v(z) [mm], away from the nip: a
+      /// muparser expression in z [mm] (three_d/core_deflection.h).
+      std::string core_deflection;
+
       static void
       declare(ParameterHandler &prm);
       void
