@@ -9,6 +9,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <rollnip/body/roll_body.h>
+#include <rollnip/kinematics.h>
 
 #include <cmath>
 
@@ -95,7 +96,7 @@ namespace rollnip
      * of its tangent, on one cell.
      */
     void
-    add_cell_terms(const MooneyRivlin                  &material,
+    add_cell_terms(const MaterialLaw<dim>              &material,
                    const TrilinosWrappers::MPI::Vector &solution,
                    const bool                           with_matrix,
                    AssemblyScratch                     &scratch,
@@ -234,7 +235,7 @@ namespace rollnip
     auto cell_worker = [&](const CellIterator &cell,
                            AssemblyScratch    &scratch,
                            AssemblyCopy       &copy) {
-      const MooneyRivlin &material = material_table[cell->material_id()];
+      const MaterialLaw<dim> &material = material_table[cell->material_id()];
       scratch.fe_values.reinit(cell);
       copy.reset();
       add_cell_terms(

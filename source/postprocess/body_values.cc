@@ -170,12 +170,12 @@ namespace rollnip
               for (unsigned int v = 0; v < 2; ++v)
                 {
                   const Point<dim> &X = fv.quadrature_point(v);
-                  const StressState s =
-                    evaluate_stress_state(body.materials()[own],
-                                          values.grad_u[v],
-                                          values.q[v],
-                                          X,
-                                          values.u[v]);
+                  const StressState s = evaluate_stress_state(body.materials(),
+                                                              own,
+                                                              values.grad_u[v],
+                                                              values.q[v],
+                                                              X,
+                                                              values.u[v]);
                   accumulate(sums,
                              reference_angle(X),
                              {reference_angle(X), s.sigma_tt});
@@ -290,14 +290,16 @@ namespace rollnip
             if (b != BoundaryIds::outer_arc && b != BoundaryIds::inner_arc)
               continue;
             values.read(cell, f, body.solution());
-            const MooneyRivlin &material =
-              body.materials()[cell->material_id()];
             for (unsigned int v = 0; v < 2; ++v)
               {
                 const Point<dim> &X     = fv.quadrature_point(v);
                 const double      theta = reference_angle(X);
-                const StressState s     = evaluate_stress_state(
-                  material, values.grad_u[v], values.q[v], X, values.u[v]);
+                const StressState s = evaluate_stress_state(body.materials(),
+                                                            cell->material_id(),
+                                                            values.grad_u[v],
+                                                            values.q[v],
+                                                            X,
+                                                            values.u[v]);
                 if (b == BoundaryIds::outer_arc)
                   accumulate(outer,
                              theta,
@@ -362,11 +364,15 @@ namespace rollnip
           fe_values[displacement].get_function_values(body.solution(), uq);
           fe_values[displacement].get_function_gradients(body.solution(), gq);
           fe_values[pressure_unknown].get_function_values(body.solution(), qq);
-          const MooneyRivlin &material = body.materials()[cell->material_id()];
           for (unsigned int k = 0; k < quadrature.size(); ++k)
             {
-              const StressState s = evaluate_stress_state(
-                material, gq[k], qq[k], fe_values.quadrature_point(k), uq[k]);
+              const StressState s =
+                evaluate_stress_state(body.materials(),
+                                      cell->material_id(),
+                                      gq[k],
+                                      qq[k],
+                                      fe_values.quadrature_point(k),
+                                      uq[k]);
               e.min_J = std::min(e.min_J, s.J);
               e.max_abs_J_minus_1 =
                 std::max(e.max_abs_J_minus_1, std::abs(s.J - 1.));

@@ -6,6 +6,7 @@
 
 #include <rollnip/boundary_ids.h>
 #include <rollnip/geometry/angles.h>
+#include <rollnip/kinematics.h>
 #include <rollnip/postprocess/line_traction.h>
 
 #include <algorithm>
@@ -200,7 +201,8 @@ namespace rollnip
                                                          grad_u);
           fe_values[pressure_unknown].get_function_values(body.solution(),
                                                           q_values);
-          const MooneyRivlin &material = body.materials()[cell->material_id()];
+          const MaterialLaw<dim> &material =
+            body.materials()[cell->material_id()];
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
               const Tensor<2, dim> P =

@@ -8,7 +8,7 @@
 
 #include <rollnip/geometry/angles.h>
 #include <rollnip/global.h>
-#include <rollnip/material/mooney_rivlin.h>
+#include <rollnip/kinematics.h>
 #include <rollnip/parameters.h>
 
 #include <functional>
