@@ -4,6 +4,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <rollnip/boundary_ids.h>
+#include <rollnip/fe_fields.h>
 #include <rollnip/geometry/angles.h>
 #include <rollnip/postprocess/body_values.h>
 #include <rollnip/postprocess/line_traction.h>
@@ -105,8 +106,8 @@ namespace rollnip
            const TrilinosWrappers::MPI::Vector                  &solution)
       {
         fv.reinit(cell, f);
-        const FEValuesExtractors::Vector displacement(0);
-        const FEValuesExtractors::Scalar pressure_unknown(dim);
+        using FEFields::displacement;
+        const auto &pressure_unknown = FEFields::pressure;
         fv[displacement].get_function_values(solution, u);
         fv[displacement].get_function_gradients(solution, grad_u);
         fv[pressure_unknown].get_function_values(solution, q);
@@ -342,19 +343,19 @@ namespace rollnip
   FieldExtremes
   field_extremes(const RollBody &body)
   {
-    const QGauss<dim>                quadrature(body.fe().degree + 1);
-    FEValues<dim>                    fe_values(body.mapping(),
+    const QGauss<dim> quadrature = FEFields::cell_quadrature(body.fe());
+    FEValues<dim>     fe_values(body.mapping(),
                             body.fe(),
                             quadrature,
                             update_values | update_gradients |
                               update_quadrature_points);
-    const FEValuesExtractors::Vector displacement(0);
-    const FEValuesExtractors::Scalar pressure_unknown(dim);
-    std::vector<Tensor<1, dim>>      uq(quadrature.size());
-    std::vector<Tensor<2, dim>>      gq(quadrature.size());
-    std::vector<double>              qq(quadrature.size());
-    constexpr double                 big = std::numeric_limits<double>::max();
-    FieldExtremes                    e;
+    using FEFields::displacement;
+    const auto                 &pressure_unknown = FEFields::pressure;
+    std::vector<Tensor<1, dim>> uq(quadrature.size());
+    std::vector<Tensor<2, dim>> gq(quadrature.size());
+    std::vector<double>         qq(quadrature.size());
+    constexpr double            big = std::numeric_limits<double>::max();
+    FieldExtremes               e;
     e.min_J = e.min_principal_stretch = e.min_sigma_rr = big;
     e.max_sigma_rr                                     = -big;
     for (const auto &cell : body.dofs().active_cell_iterators())
