@@ -11,6 +11,7 @@
 
 #include <rollnip/body/roll_body.h>
 #include <rollnip/boundary_ids.h>
+#include <rollnip/fe_fields.h>
 #include <rollnip/geometry/roll_mesh.h>
 #include <rollnip/loading/applied_load.h>
 
@@ -78,7 +79,7 @@ namespace rollnip
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
     owned_pressure_dofs =
-      DoFTools::extract_dofs(dof_handler, ComponentMask({false, false, true}));
+      DoFTools::extract_dofs(dof_handler, FEFields::pressure_mask(*element));
 
     make_constraints();
     make_sparsity_and_vectors();
@@ -119,8 +120,7 @@ namespace rollnip
                                      dsp,
                                      mpi_communicator);
         DoFTools::extract_constant_modes(dof_handler,
-                                         element->component_mask(
-                                           FEValuesExtractors::Vector(0)),
+                                         FEFields::displacement_mask(*element),
                                          constant_modes);
       }
 
@@ -172,7 +172,7 @@ namespace rollnip
           b,
           Functions::ZeroFunction<dim>(dim + 1),
           boundary_constraints,
-          element->component_mask(FEValuesExtractors::Vector(0)));
+          FEFields::displacement_mask(*element));
     add_symmetry_constraints();
     boundary_constraints.close();
   }

@@ -9,6 +9,8 @@
 #include <deal.II/lac/vector.h>
 
 #include <rollnip/body/roll_body.h>
+#include <rollnip/fe_fields.h>
+#include <rollnip/kinematics.h>
 
 #include <cmath>
 
@@ -95,19 +97,19 @@ namespace rollnip
      * of its tangent, on one cell.
      */
     void
-    add_cell_terms(const MooneyRivlin                  &material,
+    add_cell_terms(const MaterialLaw<dim>              &material,
                    const TrilinosWrappers::MPI::Vector &solution,
                    const bool                           with_matrix,
                    AssemblyScratch                     &scratch,
                    AssemblyCopy                        &copy)
     {
-      const FEValuesExtractors::Vector displacement(0);
-      const FEValuesExtractors::Scalar pressure_unknown(dim);
-      const FEValues<dim>             &fe_values = scratch.fe_values;
-      const unsigned int               n_dofs    = copy.dof_indices.size();
-      const Tensor<2, dim>             I         = unit_symmetric_tensor<dim>();
-      auto &grad_phi = scratch.grad_phi, &dP = scratch.dP;
-      auto &psi = scratch.psi;
+      using FEFields::displacement;
+      const auto          &pressure_unknown = FEFields::pressure;
+      const FEValues<dim> &fe_values        = scratch.fe_values;
+      const unsigned int   n_dofs           = copy.dof_indices.size();
+      const Tensor<2, dim> I                = unit_symmetric_tensor<dim>();
+      auto                &grad_phi = scratch.grad_phi, &dP = scratch.dP;
+      auto                &psi = scratch.psi;
       fe_values[displacement].get_function_gradients(solution, scratch.grad_u);
       fe_values[pressure_unknown].get_function_values(solution,
                                                       scratch.q_values);
@@ -162,9 +164,9 @@ namespace rollnip
                    AssemblyScratch                     &scratch,
                    AssemblyCopy                        &copy)
     {
-      const FEValuesExtractors::Vector displacement(0);
-      FEFaceValues<dim>               &fv     = *scratch.fe_face_values;
-      const unsigned int               n_dofs = copy.dof_indices.size();
+      using FEFields::displacement;
+      FEFaceValues<dim> &fv     = *scratch.fe_face_values;
+      const unsigned int n_dofs = copy.dof_indices.size();
       load.for_each_point(
         cell,
         fv,
@@ -205,13 +207,13 @@ namespace rollnip
       copy.preconditioner_matrix.reinit(n_dofs, n_dofs);
       for (unsigned int i = 0; i < n_dofs; ++i)
         {
-          if (fe.system_to_component_index(i).first == dim)
+          if (FEFields::is_pressure(fe, i))
             {
               copy.preconditioner_matrix(i, i) = copy.pressure_mass(i) / G;
               continue;
             }
           for (unsigned int j = 0; j < n_dofs; ++j)
-            if (fe.system_to_component_index(j).first != dim)
+            if (!FEFields::is_pressure(fe, j))
               copy.preconditioner_matrix(i, j) = copy.cell_matrix(i, j);
         }
     }
@@ -234,7 +236,7 @@ namespace rollnip
     auto cell_worker = [&](const CellIterator &cell,
                            AssemblyScratch    &scratch,
                            AssemblyCopy       &copy) {
-      const MooneyRivlin &material = material_table[cell->material_id()];
+      const MaterialLaw<dim> &material = material_table[cell->material_id()];
       scratch.fe_values.reinit(cell);
       copy.reset();
       add_cell_terms(
@@ -290,7 +292,7 @@ namespace rollnip
       copier,
       AssemblyScratch(*cell_mapping,
                       *element,
-                      QGauss<dim>(element->degree + 1),
+                      FEFields::cell_quadrature(*element),
                       follower_load.make_face_values(*cell_mapping, *element)),
       AssemblyCopy(element->n_dofs_per_cell()));
 
@@ -314,7 +316,7 @@ namespace rollnip
   {
     const auto face_values =
       follower_load.make_face_values(*cell_mapping, *element);
-    const FEValuesExtractors::Vector     displacement(0);
+    using FEFields::displacement;
     const unsigned int                   n_dofs = element->n_dofs_per_cell();
     Vector<double>                       cell_vector(n_dofs);
     std::vector<types::global_dof_index> dof_indices(n_dofs);
@@ -365,14 +367,14 @@ namespace rollnip
     std::vector<std::vector<types::global_dof_index>> &blocks,
     std::vector<FullMatrix<double>>                   &inverses) const
   {
-    FEValues<dim>                    fe_values(*cell_mapping,
+    FEValues<dim>             fe_values(*cell_mapping,
                             *element,
-                            QGauss<dim>(element->degree + 1),
+                            FEFields::cell_quadrature(*element),
                             update_values | update_JxW_values);
-    const FEValuesExtractors::Scalar pressure_unknown(dim);
-    std::vector<unsigned int>        local_p;
+    const auto               &pressure_unknown = FEFields::pressure;
+    std::vector<unsigned int> local_p;
     for (unsigned int i = 0; i < element->n_dofs_per_cell(); ++i)
-      if (element->system_to_component_index(i).first == dim)
+      if (FEFields::is_pressure(*element, i))
         local_p.push_back(i);
     const unsigned int n_p = local_p.size();
 

@@ -4,6 +4,7 @@
 
 #include <deal.II/numerics/error_estimator.h>
 
+#include <rollnip/fe_fields.h>
 #include <rollnip/geometry/adaptive_grading.h>
 #include <rollnip/geometry/roll_mesh.h>
 #include <rollnip/problem.h>
@@ -26,13 +27,14 @@ namespace rollnip
     const unsigned int n           = steps.size();
 
     Vector<float> eta(dof_handler.get_triangulation().n_active_cells());
-    KellyErrorEstimator<dim>::estimate(MappingQ<dim>(p + 1),
-                                       dof_handler,
-                                       QGauss<dim - 1>(p + 1),
-                                       {},
-                                       problem.current_solution(),
-                                       eta,
-                                       ComponentMask({true, true, false}));
+    KellyErrorEstimator<dim>::estimate(
+      MappingQ<dim>(p + 1),
+      dof_handler,
+      FEFields::face_quadrature(dof_handler.get_fe()),
+      {},
+      problem.current_solution(),
+      eta,
+      FEFields::displacement_mask(dof_handler.get_fe()));
 
     // E_j: the squared indicators of the cells of coarse column j.
     std::vector<double> edges(n + 1, 0.);

@@ -1,6 +1,5 @@
-#include <deal.II/base/quadrature_lib.h>
-
 #include <rollnip/boundary_ids.h>
+#include <rollnip/fe_fields.h>
 #include <rollnip/loading/follower_load.h>
 #include <rollnip/loading/pressure_load.h>
 
@@ -37,7 +36,7 @@ namespace rollnip
   {
     return std::make_unique<FEFaceValues<dim>>(mapping,
                                                fe,
-                                               QGauss<dim - 1>(fe.degree + 1),
+                                               FEFields::face_quadrature(fe),
                                                update_values |
                                                  update_gradients |
                                                  update_normal_vectors |

@@ -7,6 +7,7 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <rollnip/boundary_ids.h>
+#include <rollnip/fe_fields.h>
 #include <rollnip/geometry/angles.h>
 #include <rollnip/loading/pressure_load.h>
 #include <rollnip/output/atomic_file.h>
@@ -69,13 +70,13 @@ namespace rollnip
       const MPI_Comm                comm = body.communicator();
       TrilinosWrappers::MPI::Vector sum(dof_smooth.locally_owned_dofs(), comm);
       TrilinosWrappers::MPI::Vector weight(sum);
-      const QGauss<dim>             quadrature(body.fe().degree + 1);
-      FEValues<dim>                 fe_values(body.mapping(),
+      const QGauss<dim>   quadrature = FEFields::cell_quadrature(body.fe());
+      FEValues<dim>       fe_values(body.mapping(),
                               body.fe(),
                               quadrature,
                               update_values | update_JxW_values);
-      std::vector<double>           qv(quadrature.size());
-      const FEValuesExtractors::Scalar     pressure_unknown(dim);
+      std::vector<double> qv(quadrature.size());
+      const auto         &pressure_unknown = FEFields::pressure;
       std::vector<types::global_dof_index> idx(
         dof_smooth.get_fe().n_dofs_per_cell());
       auto smooth_cell = dof_smooth.begin_active();

@@ -4,6 +4,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <rollnip/boundary_ids.h>
+#include <rollnip/fe_fields.h>
 #include <rollnip/geometry/angles.h>
 #include <rollnip/postprocess/body_values.h>
 #include <rollnip/postprocess/line_traction.h>
@@ -105,8 +106,8 @@ namespace rollnip
            const TrilinosWrappers::MPI::Vector                  &solution)
       {
         fv.reinit(cell, f);
-        const FEValuesExtractors::Vector displacement(0);
-        const FEValuesExtractors::Scalar pressure_unknown(dim);
+        using FEFields::displacement;
+        const auto &pressure_unknown = FEFields::pressure;
         fv[displacement].get_function_values(solution, u);
         fv[displacement].get_function_gradients(solution, grad_u);
         fv[pressure_unknown].get_function_values(solution, q);
@@ -170,12 +171,12 @@ namespace rollnip
               for (unsigned int v = 0; v < 2; ++v)
                 {
                   const Point<dim> &X = fv.quadrature_point(v);
-                  const StressState s =
-                    evaluate_stress_state(body.materials()[own],
-                                          values.grad_u[v],
-                                          values.q[v],
-                                          X,
-                                          values.u[v]);
+                  const StressState s = evaluate_stress_state(body.materials(),
+                                                              own,
+                                                              values.grad_u[v],
+                                                              values.q[v],
+                                                              X,
+                                                              values.u[v]);
                   accumulate(sums,
                              reference_angle(X),
                              {reference_angle(X), s.sigma_tt});
@@ -290,14 +291,16 @@ namespace rollnip
             if (b != BoundaryIds::outer_arc && b != BoundaryIds::inner_arc)
               continue;
             values.read(cell, f, body.solution());
-            const MooneyRivlin &material =
-              body.materials()[cell->material_id()];
             for (unsigned int v = 0; v < 2; ++v)
               {
                 const Point<dim> &X     = fv.quadrature_point(v);
                 const double      theta = reference_angle(X);
-                const StressState s     = evaluate_stress_state(
-                  material, values.grad_u[v], values.q[v], X, values.u[v]);
+                const StressState s = evaluate_stress_state(body.materials(),
+                                                            cell->material_id(),
+                                                            values.grad_u[v],
+                                                            values.q[v],
+                                                            X,
+                                                            values.u[v]);
                 if (b == BoundaryIds::outer_arc)
                   accumulate(outer,
                              theta,
@@ -340,19 +343,19 @@ namespace rollnip
   FieldExtremes
   field_extremes(const RollBody &body)
   {
-    const QGauss<dim>                quadrature(body.fe().degree + 1);
-    FEValues<dim>                    fe_values(body.mapping(),
+    const QGauss<dim> quadrature = FEFields::cell_quadrature(body.fe());
+    FEValues<dim>     fe_values(body.mapping(),
                             body.fe(),
                             quadrature,
                             update_values | update_gradients |
                               update_quadrature_points);
-    const FEValuesExtractors::Vector displacement(0);
-    const FEValuesExtractors::Scalar pressure_unknown(dim);
-    std::vector<Tensor<1, dim>>      uq(quadrature.size());
-    std::vector<Tensor<2, dim>>      gq(quadrature.size());
-    std::vector<double>              qq(quadrature.size());
-    constexpr double                 big = std::numeric_limits<double>::max();
-    FieldExtremes                    e;
+    using FEFields::displacement;
+    const auto                 &pressure_unknown = FEFields::pressure;
+    std::vector<Tensor<1, dim>> uq(quadrature.size());
+    std::vector<Tensor<2, dim>> gq(quadrature.size());
+    std::vector<double>         qq(quadrature.size());
+    constexpr double            big = std::numeric_limits<double>::max();
+    FieldExtremes               e;
     e.min_J = e.min_principal_stretch = e.min_sigma_rr = big;
     e.max_sigma_rr                                     = -big;
     for (const auto &cell : body.dofs().active_cell_iterators())
@@ -362,11 +365,15 @@ namespace rollnip
           fe_values[displacement].get_function_values(body.solution(), uq);
           fe_values[displacement].get_function_gradients(body.solution(), gq);
           fe_values[pressure_unknown].get_function_values(body.solution(), qq);
-          const MooneyRivlin &material = body.materials()[cell->material_id()];
           for (unsigned int k = 0; k < quadrature.size(); ++k)
             {
-              const StressState s = evaluate_stress_state(
-                material, gq[k], qq[k], fe_values.quadrature_point(k), uq[k]);
+              const StressState s =
+                evaluate_stress_state(body.materials(),
+                                      cell->material_id(),
+                                      gq[k],
+                                      qq[k],
+                                      fe_values.quadrature_point(k),
+                                      uq[k]);
               e.min_J = std::min(e.min_J, s.J);
               e.max_abs_J_minus_1 =
                 std::max(e.max_abs_J_minus_1, std::abs(s.J - 1.));

@@ -5,7 +5,9 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <rollnip/boundary_ids.h>
+#include <rollnip/fe_fields.h>
 #include <rollnip/geometry/angles.h>
+#include <rollnip/kinematics.h>
 #include <rollnip/postprocess/line_traction.h>
 
 #include <algorithm>
@@ -102,17 +104,17 @@ namespace rollnip
                       std::map<NodeKey, NodeSums> &nodes,
                       FaceRecords                 &faces)
     {
-      const auto                      &fe = body.fe();
-      const FEValuesExtractors::Vector displacement(0);
-      const unsigned int               degree = fe.base_element(0).degree;
-      FEFaceValues<dim>                at_nodes(
+      const auto &fe = body.fe();
+      using FEFields::displacement;
+      const unsigned int degree = fe.base_element(0).degree;
+      FEFaceValues<dim>  at_nodes(
         body.mapping(),
         fe,
         Quadrature<dim - 1>(FE_Q<dim - 1>(degree).get_unit_support_points()),
         update_values | update_quadrature_points);
       FEFaceValues<dim>                    gauss(body.mapping(),
                               fe,
-                              QGauss<dim - 1>(degree + 1),
+                              FEFields::face_quadrature(fe),
                               update_values | update_gradients |
                                 update_normal_vectors | update_JxW_values);
       std::vector<Tensor<2, dim>>          grad_u(gauss.n_quadrature_points);
@@ -167,18 +169,18 @@ namespace rollnip
                      const std::set<NodeKey>     &keys,
                      std::map<NodeKey, NodeSums> &nodes)
     {
-      const auto                          &fe = body.fe();
-      const FEValuesExtractors::Vector     displacement(0);
-      const FEValuesExtractors::Scalar     pressure_unknown(dim);
-      const QGauss<dim>                    quadrature(fe.degree + 1);
-      FEValues<dim>                        fe_values(body.mapping(),
+      const auto &fe = body.fe();
+      using FEFields::displacement;
+      const auto                 &pressure_unknown = FEFields::pressure;
+      const QGauss<dim>           quadrature = FEFields::cell_quadrature(fe);
+      FEValues<dim>               fe_values(body.mapping(),
                               fe,
                               quadrature,
                               update_values | update_gradients |
                                 update_JxW_values);
-      const auto                           x_dof = x_dof_of_node(fe);
-      std::vector<Tensor<2, dim>>          grad_u(quadrature.size());
-      std::vector<double>                  q_values(quadrature.size());
+      const auto                  x_dof = x_dof_of_node(fe);
+      std::vector<Tensor<2, dim>> grad_u(quadrature.size());
+      std::vector<double>         q_values(quadrature.size());
       std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
       const Tensor<2, dim>                 I = unit_symmetric_tensor<dim>();
       for (const auto &cell : body.dofs().active_cell_iterators())
@@ -190,7 +192,8 @@ namespace rollnip
           for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
             {
               const auto c = fe.system_to_component_index(i);
-              if (c.first < dim && keys.count(dofs[x_dof[c.second]]) > 0)
+              if (c.first != FEFields::pressure_component &&
+                  keys.count(dofs[x_dof[c.second]]) > 0)
                 touched.emplace_back(i, dofs[x_dof[c.second]]);
             }
           if (touched.empty())
@@ -200,7 +203,8 @@ namespace rollnip
                                                          grad_u);
           fe_values[pressure_unknown].get_function_values(body.solution(),
                                                           q_values);
-          const MooneyRivlin &material = body.materials()[cell->material_id()];
+          const MaterialLaw<dim> &material =
+            body.materials()[cell->material_id()];
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
               const Tensor<2, dim> P =

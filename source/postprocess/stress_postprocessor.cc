@@ -59,8 +59,8 @@ namespace rollnip
     const DataPostprocessorInputs::Vector<dim> &inputs,
     std::vector<Vector<double>>                &computed) const
   {
-    const MooneyRivlin &material =
-      materials[inputs.template get_cell<dim>()->material_id()];
+    const types::material_id id =
+      inputs.template get_cell<dim>()->material_id();
     for (unsigned int p = 0; p < inputs.solution_values.size(); ++p)
       {
         Tensor<2, dim> grad_u;
@@ -71,7 +71,8 @@ namespace rollnip
             grad_u[i] = inputs.solution_gradients[p][i];
           }
         const StressState s =
-          evaluate_stress_state(material,
+          evaluate_stress_state(materials,
+                                id,
                                 grad_u,
                                 inputs.solution_values[p][dim],
                                 inputs.evaluation_points[p],

@@ -18,22 +18,25 @@ namespace rollnip
   }
 
   StressState
-  evaluate_stress_state(const MooneyRivlin   &material,
-                        const Tensor<2, dim> &grad_u,
-                        const double          q,
-                        const Point<dim>     &X,
-                        const Tensor<1, dim> &u)
+  evaluate_stress_state(const MaterialTable     &materials,
+                        const types::material_id id,
+                        const Tensor<2, dim>    &grad_u,
+                        const double             q,
+                        const Point<dim>        &X,
+                        const Tensor<1, dim>    &u)
   {
-    StressState          s;
-    const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + grad_u;
-    material.cauchy(F, q, s.sigma, s.sigma_zz);
-    const Point<dim> x = X + u;
+    StressState             s;
+    const Tensor<2, dim>    F   = unit_symmetric_tensor<dim>() + grad_u;
+    const MaterialLaw<dim> &law = materials[id];
+    s.sigma                     = law.cauchy(F, q);
+    s.sigma_zz                  = law.out_of_plane_stress(F, q);
+    const Point<dim> x          = X + u;
     polar_components(
       s.sigma, std::atan2(x[1], x[0]), s.sigma_rr, s.sigma_tt, s.sigma_rt);
     s.J = determinant(F);
     // In linear theory the stretches are those of the small strain.
     const SymmetricTensor<2, dim> C =
-      material.is_linear()
+      materials.is_linear()
         ? unit_symmetric_tensor<dim>() + 2. * symmetrize(grad_u)
         : SymmetricTensor<2, dim>(symmetrize(transpose(F) * F));
     const auto ev    = eigenvalues(C);

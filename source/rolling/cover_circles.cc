@@ -3,6 +3,7 @@
 
 #include <deal.II/fe/fe_values.h>
 
+#include <rollnip/fe_fields.h>
 #include <rollnip/rolling/cover_circles.h>
 
 #include <algorithm>
@@ -104,9 +105,8 @@ namespace rollnip
     std::vector<double>
     local_samples(const RollBody &body)
     {
-      const unsigned int               degree = body.fe().degree;
-      const CircleQuadrature           cq     = circle_quadrature(degree);
-      const FEValuesExtractors::Vector displacement(0);
+      const unsigned int     degree = body.fe().degree;
+      const CircleQuadrature cq     = circle_quadrature(degree);
       std::array<std::unique_ptr<FEValues<dim>>, 2> fe_values;
       for (unsigned int k = 0; k < 2; ++k)
         fe_values[k] =
@@ -125,7 +125,8 @@ namespace rollnip
             const RingCell ring = ring_cell(cell);
             auto          &fv   = *fe_values[ring.xi_circumferential ? 0 : 1];
             fv.reinit(cell);
-            fv[displacement].get_function_gradients(body.solution(), grad_u);
+            fv[FEFields::displacement].get_function_gradients(body.solution(),
+                                                              grad_u);
             const unsigned int layer =
               material.n_layers() == 1 ? 0 : cell->material_id();
             const double C1 = material.layer_C1[layer];

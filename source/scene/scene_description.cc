@@ -1,4 +1,5 @@
-#include <rollnip/material/mooney_rivlin.h>
+#include <rollnip/global.h>
+#include <rollnip/material/mooney_rivlin_law.h>
 #include <rollnip/scene/scene_description.h>
 
 #include <cmath>
@@ -10,7 +11,7 @@ namespace rollnip
   LayerDescription::shear_modulus() const
   {
     // The theory does not change the modulus.
-    return MooneyRivlin(C1, C2, false).shear_modulus();
+    return MooneyRivlinLaw<dim>(C1, C2).shear_modulus();
   }
 
   double

@@ -36,6 +36,7 @@ namespace rollnip
     if (newton.solve(target, step))
       return true;
     body.set_solution(converged);
+    body.rollback_state();
     return false;
   }
 
@@ -138,6 +139,7 @@ namespace rollnip
               break;
             continue;
           }
+        body.commit_state();
         previous          = converged;
         previous_lambda   = lambda;
         lambda            = target;

@@ -158,6 +158,7 @@ namespace rollnip
 
     explain_failure(check_J && !(min_J > 0), errors);
     body.set_solution(start);
+    body.rollback_state();
     return false;
   }
 

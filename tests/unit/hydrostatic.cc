@@ -42,8 +42,8 @@ main(int argc, char **argv)
         checker.check(status.converged, element + " run converged");
 
         // Every Gauss point: u = 0 and sigma = -q I.
-        const MooneyRivlin material(parameters.material);
-        const unsigned int degree =
+        const MaterialTable materials(parameters.material);
+        const unsigned int  degree =
           parameters.discretization.displacement_degree();
         const QGauss<dim>                quadrature(degree + 1);
         MappingQ<dim>                    mapping(degree);
@@ -68,7 +68,8 @@ main(int argc, char **argv)
             for (unsigned int k = 0; k < quadrature.size(); ++k)
               {
                 const StressState s =
-                  evaluate_stress_state(material,
+                  evaluate_stress_state(materials,
+                                        cell->material_id(),
                                         grad_u[k],
                                         qv[k],
                                         fe_values.quadrature_point(k),

@@ -123,6 +123,22 @@ namespace rollnip
       return solution_owned;
     }
 
+    /// The named point where a converged load step is accepted: the laws
+    /// commit their internal variables (MaterialLaw::commit()).
+    void
+    commit_state()
+    {
+      material_table.commit();
+    }
+    /// The named point where a solve is discarded and the state goes back
+    /// to the last converged one: the laws roll their internal variables
+    /// back (MaterialLaw::rollback()).
+    void
+    rollback_state()
+    {
+      material_table.rollback();
+    }
+
     const TrilinosWrappers::MPI::Vector &
     residual() const
     {
@@ -241,7 +257,7 @@ namespace rollnip
 
     parallel::distributed::Triangulation<dim> triangulation;
     std::unique_ptr<NipFittedMesh>            nip_mesh; ///< or none
-    const MaterialTable                       material_table;
+    MaterialTable                             material_table;
     FollowerLoad                              follower_load;
 
     std::unique_ptr<MappingQ<dim>> cell_mapping;

@@ -6,9 +6,10 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping.h>
 
+#include <rollnip/fe_fields.h>
 #include <rollnip/geometry/angles.h>
 #include <rollnip/global.h>
-#include <rollnip/material/mooney_rivlin.h>
+#include <rollnip/kinematics.h>
 #include <rollnip/parameters.h>
 
 #include <functional>
@@ -53,8 +54,8 @@ namespace rollnip
     acts_on(const typename DoFHandler<dim>::active_cell_iterator &cell,
             const unsigned int                                    f) const;
 
-    /// Face values for the load integrals: Gauss(degree + 1), with values,
-    /// gradients, normals, points and JxW.
+    /// Face values for the load integrals (FEFields::face_quadrature), with
+    /// values, gradients, normals, points and JxW.
     std::unique_ptr<FEFaceValues<dim>>
     make_face_values(const Mapping<dim>       &mapping,
                      const FiniteElement<dim> &fe) const;
@@ -77,14 +78,14 @@ namespace rollnip
                    std::vector<Tensor<2, dim>> &grad_u,
                    const Visit                 &visit) const
     {
-      const FEValuesExtractors::Vector displacement(0);
       for (const auto f : cell->face_indices())
         {
           if (!acts_on(cell, f))
             continue;
           face_values.reinit(cell, f);
           grad_u.resize(face_values.n_quadrature_points);
-          face_values[displacement].get_function_gradients(solution, grad_u);
+          face_values[FEFields::displacement].get_function_gradients(solution,
+                                                                     grad_u);
           for (unsigned int q = 0; q < face_values.n_quadrature_points; ++q)
             visit(q,
                   reference_angle(face_values.quadrature_point(q)),

@@ -3,15 +3,17 @@
 
 #include <deal.II/base/types.h>
 
-#include <rollnip/material/mooney_rivlin.h>
+#include <rollnip/global.h>
+#include <rollnip/material/material_law.h>
 #include <rollnip/parameters.h>
 
+#include <memory>
 #include <vector>
 
 namespace rollnip
 {
   /**
-   * The Mooney-Rivlin law of every layer of the cover, looked up by a
+   * The law of every layer of the cover (make_layer_law()), looked up by a
    * cell's material id (layer 0 is the one on the core). A one-layer cover
    * gives every cell the same law, whatever its id (gmsh meshes may carry
    * any physical surface tag).
@@ -21,10 +23,10 @@ namespace rollnip
   public:
     explicit MaterialTable(const Parameters::Material &material);
 
-    const MooneyRivlin &
+    const MaterialLaw<dim> &
     operator[](const types::material_id id) const
     {
-      return layers.size() == 1 ? layers[0] : layers.at(id);
+      return layers.size() == 1 ? *layers[0] : *layers.at(id);
     }
 
     unsigned int
@@ -35,30 +37,32 @@ namespace rollnip
 
     /// The layer on the outer surface, whose modulus the contact estimates
     /// (the Hertz start of the pressure) use.
-    const MooneyRivlin &
+    const MaterialLaw<dim> &
     surface_layer() const
     {
-      return layers.back();
+      return *layers.back();
     }
 
+    /// Whether the laws are those of the linear theory: the body then
+    /// also takes the load on the reference surface and does not check J.
     bool
     is_linear() const
     {
-      return layers[0].is_linear();
+      return linear;
     }
 
-  private:
-    std::vector<MooneyRivlin> layers;
-  };
+    /// MaterialLaw::commit() of every layer: a converged load step.
+    void
+    commit();
 
-  /// G = 2 (C1 + C2) [MPa] of the layer on the outer surface: the modulus
-  /// of the contact estimates and the reference solutions (Hertz, thin
-  /// layer).
-  inline double
-  surface_shear_modulus(const Parameters::Material &material)
-  {
-    return MooneyRivlin(material).shear_modulus();
-  }
+    /// MaterialLaw::rollback() of every layer: a discarded solve.
+    void
+    rollback();
+
+  private:
+    bool                                           linear;
+    std::vector<std::unique_ptr<MaterialLaw<dim>>> layers;
+  };
 } // namespace rollnip
 
 #endif

@@ -4,7 +4,8 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <rollnip/material/mooney_rivlin.h>
+#include <rollnip/global.h>
+#include <rollnip/material/material_table.h>
 
 namespace rollnip
 {
@@ -25,12 +26,16 @@ namespace rollnip
     double hydrostatic_pressure;
   };
 
+  /// The state at a point of a cell of material id @p id (its layer's law
+  /// in @p materials) with displacement gradient @p grad_u, pressure
+  /// unknown @p q, reference position @p X and displacement @p u.
   StressState
-  evaluate_stress_state(const MooneyRivlin   &material,
-                        const Tensor<2, dim> &grad_u,
-                        const double          q,
-                        const Point<dim>     &X,
-                        const Tensor<1, dim> &u);
+  evaluate_stress_state(const MaterialTable     &materials,
+                        const types::material_id id,
+                        const Tensor<2, dim>    &grad_u,
+                        const double             q,
+                        const Point<dim>        &X,
+                        const Tensor<1, dim>    &u);
 
   /// Polar components (rr, tt, rt) of a symmetric tensor at angle phi.
   void

@@ -19,7 +19,7 @@ namespace rollnip
     /// and C2); 0: C1 and C2 were given.
     double hardness_modulus = 0;
 
-    /// G = 2 (C1 + C2) [MPa], the law's (MooneyRivlin::shear_modulus).
+    /// G = 2 (C1 + C2) [MPa], the law's (MaterialLaw::shear_modulus).
     double
     shear_modulus() const;
 
