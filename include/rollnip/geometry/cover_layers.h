@@ -35,9 +35,9 @@ namespace rollnip
   /// where the nip loads it. Measured on a 3.5 mm top 5 times stiffer than
   /// its 10 mm base: the error of P of Q1-P0 at level 2 falls from 0.033 %
   /// to 0.028 % (against Q2-P1, doc/accuracy.md; the peak pressure's
-  /// rises from 0.071 % to 0.085 %). The square root grades further but
-  /// mixes the error's sign over the levels: its level-1 estimate falls
-  /// to a quarter of the error.
+  /// rises from 0.071 % to 0.085 %). The square root grades further, but
+  /// its error then stops falling by 4 per level and the level-1 error
+  /// estimate drops to a quarter of the error.
   /// Continuous in the moduli: two equal layers stay one layer.
   double
   stiff_layer_grading(const Parameters::AllParameters &parameters,
