@@ -52,6 +52,18 @@ namespace rollnip
     return counts;
   }
 
+  double
+  stiff_layer_grading(const Parameters::AllParameters &parameters,
+                      const unsigned int               layer)
+  {
+    const auto &m = parameters.material;
+    if (layer == 0 || layer >= m.n_layers())
+      return 1.;
+    const double G_below = m.layer_C1[layer - 1] + m.layer_C2[layer - 1];
+    const double G       = m.layer_C1[layer] + m.layer_C2[layer];
+    return G > G_below ? std::pow(G_below / G, 0.25) : 1.;
+  }
+
   std::vector<double>
   radial_steps(const Parameters::AllParameters &parameters, const double ratio)
   {
@@ -69,11 +81,14 @@ namespace rollnip
     unsigned int        k = 0;
     for (unsigned int j = 0; j < counts.size(); ++j)
       {
-        double sum = 0;
-        for (unsigned int i = k; i < k + counts[j]; ++i)
-          sum += whole[i];
-        for (unsigned int i = k; i < k + counts[j]; ++i)
-          steps.push_back(whole[i] * (radii[j + 1] - radii[j]) / sum);
+        const std::vector<double> extra =
+          graded_steps(counts[j], 1., stiff_layer_grading(parameters, j));
+        std::vector<double> mine;
+        double              sum = 0;
+        for (unsigned int i = 0; i < counts[j]; ++i)
+          sum += mine.emplace_back(whole[k + i] * extra[i]);
+        for (const double w : mine)
+          steps.push_back(w * (radii[j + 1] - radii[j]) / sum);
         k += counts[j];
       }
     return steps;

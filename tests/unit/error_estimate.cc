@@ -18,9 +18,10 @@
 //    is sharp; where e changes sign between two scenes it is accidentally
 //    tiny, which no estimate can see);
 //  - Q1-P0 on the default mesh (8 x 18 coarse cells, nip-fitted) is within
-//    0.03 % of the reference in P at level 2 on run 30 (the issue's
-//    target), and within 0.11 % at level 1 (measured 0.107 % at
-//    u0 = 3 mm, the issue asks 0.1 %; a guard against getting worse).
+//    0.03 % of the reference in P at level 2 on both scenes (the issue's
+//    target; measured 0.027 % on run 30, 0.028 % on the layered cover),
+//    and within 0.11 % at level 1 (measured 0.106 % on both, the issue
+//    asks 0.1 %; a guard against getting worse).
 
 #include <rollnip/app/nip_study.h>
 #include <rollnip/postprocess/error_estimate.h>
@@ -185,10 +186,43 @@ namespace
   const std::string layered_cover =
     "subsection Material\n set C1 = 0.25, 1.25\n set C2 = 0.25, 1.25\n"
     " set Layer thicknesses = 10, 3.5\nend\n";
+  // (Remade when a layer stiffer than the one below began to grade its
+  // own cells: P moved by at most 6e-6 at level 2, 2e-6 at level 3.)
   const std::vector<Reference> layered = {
-    {1, 9.37061243, 6.31291108, 9.37068394, 6.31844755},
-    {1.5, 18.4082453, 8.59573114, 18.4084764, 8.60283642},
-    {2, 30.5120096, 10.5688866, 30.5124782, 10.576574}};
+    {1, 9.37062902, 6.31289181, 9.37074, 6.31850945},
+    {1.5, 18.4082782, 8.59480336, 18.4085926, 8.60109522},
+    {2, 30.5120561, 10.5674464, 30.5126441, 10.5738037}};
+  /// Q1-P0 on the default mesh at levels 1 and 2 on a scene: every
+  /// estimate (check_scene), and the largest error of P within the
+  /// issue's 0.1 % at level 1 and 0.03 % at level 2 (level 1: 0.11 %, a
+  /// guard against getting worse, measured 0.106 % on both scenes).
+  void
+  check_default_mesh(testing::Checker             &checker,
+                     Effectivity                  &effectivity,
+                     const std::string            &values,
+                     const std::string            &extra,
+                     const std::vector<Reference> &reference,
+                     const std::string            &name)
+  {
+    for (const unsigned int level : {1u, 2u})
+      {
+        const std::string run =
+          name + ", Q1-P0, level " + std::to_string(level);
+        const std::vector<double> e =
+          check_scene(checker,
+                      effectivity,
+                      scene("Q1-P0", level, values, extra),
+                      reference,
+                      run);
+        double worst = 0;
+        for (const double x : e)
+          worst = std::max(worst, std::abs(x));
+        const double target = level == 1 ? 1.1e-3 : 3e-4;
+        checker.check(e.size() == reference.size() && worst < target,
+                      run + ": largest error of P " + testing::num(worst) +
+                        " < " + testing::num(target));
+      }
+  }
 } // namespace
 
 int
@@ -199,40 +233,16 @@ main(int argc, char **argv)
   check_arithmetic(checker);
   Effectivity effectivity;
 
-  // The run-30 scene: the default element on the default mesh at levels 1
-  // and 2, and Q2-P1 at level 0.
-  for (const unsigned int level : {1u, 2u})
-    {
-      const std::vector<double> e =
-        check_scene(checker,
-                    effectivity,
-                    scene("Q1-P0", level, "0.5, 1, 2, 3", ""),
-                    run30,
-                    "run 30, Q1-P0, level " + std::to_string(level));
-      // The default mesh's accuracy (issue: 0.1 % at level 1, 0.03 % at
-      // level 2 against an independent reference).
-      double worst = 0;
-      for (const double x : e)
-        worst = std::max(worst, std::abs(x));
-      const double target = level == 1 ? 1.1e-3 : 3e-4;
-      checker.check(e.size() == run30.size() && worst < target,
-                    "run 30, Q1-P0, level " + std::to_string(level) +
-                      ": largest error of P " + testing::num(worst) + " < " +
-                      testing::num(target));
-    }
+  // Each scene: the default element on the default mesh at levels 1 and
+  // 2, and Q2-P1 at level 0.
+  check_default_mesh(checker, effectivity, "0.5, 1, 2, 3", "", run30, "run 30");
   check_scene(checker,
               effectivity,
               scene("Q2-P1", 0, "0.5, 1, 2, 3", ""),
               run30,
               "run 30, Q2-P1, level 0");
-
-  // The layered cover: Q1-P0 at levels 1 and 2, Q2-P1 at level 0.
-  for (const unsigned int level : {1u, 2u})
-    check_scene(checker,
-                effectivity,
-                scene("Q1-P0", level, "1, 1.5, 2", layered_cover),
-                layered,
-                "layered, Q1-P0, level " + std::to_string(level));
+  check_default_mesh(
+    checker, effectivity, "1, 1.5, 2", layered_cover, layered, "layered");
   check_scene(checker,
               effectivity,
               scene("Q2-P1", 0, "1, 1.5, 2", layered_cover),

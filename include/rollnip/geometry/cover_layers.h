@@ -27,9 +27,26 @@ namespace rollnip
   std::vector<unsigned int>
   layer_cell_counts(const Parameters::AllParameters &parameters);
 
+  /// The extra grading (outermost over innermost cell) of @p layer's own
+  /// cells: (G below / G)^(1/4) for a layer stiffer than the one below it,
+  /// 1 otherwise. A stiff layer on a soft one bends over a length that
+  /// grows like the fourth root of its stiffness against the foundation's;
+  /// its cells thicken towards the interface and thin towards its surface,
+  /// where the nip loads it. Measured on a 3.5 mm top 5 times stiffer than
+  /// its 10 mm base: the error of P of Q1-P0 at level 2 falls from 0.033 %
+  /// to 0.028 % (against Q2-P1, doc/accuracy.md; the peak pressure's
+  /// rises from 0.071 % to 0.085 %). The square root grades further, but
+  /// its error then stops falling by 4 per level and the level-1 error
+  /// estimate drops to a quarter of the error.
+  /// Continuous in the moduli: two equal layers stay one layer.
+  double
+  stiff_layer_grading(const Parameters::AllParameters &parameters,
+                      const unsigned int               layer);
+
   /// The coarse radial cell widths [mm] from R1 to R0: the geometric
   /// grading of the whole cover with last over first cell @p ratio, each
-  /// layer taking its cells of it stretched to fill the layer exactly.
+  /// layer taking its cells of it stretched to fill the layer exactly
+  /// and graded once more by stiff_layer_grading().
   std::vector<double>
   radial_steps(const Parameters::AllParameters &parameters, const double ratio);
 
