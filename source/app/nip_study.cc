@@ -3,8 +3,10 @@
 
 #include <rollnip/app/nip_report.h>
 #include <rollnip/app/nip_study.h>
+#include <rollnip/body/nested_transfer.h>
 #include <rollnip/boundary_ids.h>
 #include <rollnip/contact/counter_surface.h>
+#include <rollnip/contact/inverse_contact.h>
 #include <rollnip/contact/nip_control.h>
 #include <rollnip/contact/nip_estimates.h>
 #include <rollnip/geometry/angles.h>
@@ -168,9 +170,12 @@ namespace rollnip
     /**
      * The companion of Accuracy/Error estimate: the scene on the other
      * mesh level, which solves each nip again with the same control
-     * (theta0, P or u0), started at the answer's theta0, without a word on
-     * the screen; the difference gives every number's error
-     * (estimate_errors()).
+     * (theta0, P or u0), without a word on the screen; the difference
+     * gives every number's error (estimate_errors()). It starts from the
+     * answer: its theta0, its contact pressure, its displacement carried
+     * over to the other level (warm_start()) and the slope of its control
+     * iteration, so that it needs a few Newton steps and one or two
+     * contact solves rather than a load ramp and a search.
      */
     class ErrorCompanion
     {
@@ -211,10 +216,15 @@ namespace rollnip
         release();
       }
 
-      /// The error estimate of the converged nip @p row, solved for
-      /// @p target (a value of Contact/Values, in the program's units).
+      /// The error estimate of the converged nip @p row of @p primary,
+      /// solved for @p target (a value of Contact/Values, in the program's
+      /// units); @p slope is d log q / d log theta0 of the primary's
+      /// control there (0: unknown).
       ErrorEstimate
-      estimate(const NipRow &row, const double target)
+      estimate(const NipRow &row,
+               const double  target,
+               Scene        &primary,
+               const double  slope)
       {
         const unsigned int other = parameters.mesh.global_refinements;
         ErrorEstimate      e;
@@ -228,7 +238,12 @@ namespace rollnip
         try
           {
             SilenceStream quiet(std::cout);
-            r = control->solve(target, row.nonlinear.theta0);
+            warm_start(primary);
+            // A control of its own: the nips of earlier targets would
+            // give a worse slope than the primary's.
+            control =
+              std::make_unique<NipControl>(scene->nip_solver(), parameters);
+            r = control->solve(target, row.nonlinear.theta0, slope);
           }
         catch (const std::exception &error)
           {
@@ -258,6 +273,27 @@ namespace rollnip
       }
 
     private:
+      /// The state of the primary's converged nip on this scene's mesh,
+      /// with its contact pressure and theta0, as the last converged nip
+      /// of the contact solver; nothing where the meshes do not nest or
+      /// the counter surface is a covered roll (then the companion starts
+      /// from its last nip, as a sweep does).
+      void
+      warm_start(Scene &primary)
+      {
+        auto *mine   = dynamic_cast<InverseContact *>(&scene->nip_solver());
+        auto *theirs = dynamic_cast<InverseContact *>(&primary.nip_solver());
+        if (!mine || !theirs || !theirs->last_converged().pressure ||
+            !transfer_nested_displacement(primary.roll().body(),
+                                          scene->roll().body()))
+          return;
+        InverseContact::Converged start;
+        start.state    = scene->roll().owned_solution();
+        start.pressure = theirs->last_converged().pressure;
+        start.theta0   = theirs->last_converged().theta0;
+        mine->restore_converged(start);
+      }
+
       /// Destroys the companion's objects, its timer silenced (it would
       /// report on an exception in flight).
       void
@@ -758,7 +794,8 @@ namespace rollnip
               evaluate_nip(scene, n + 1, row);
               if (companion)
                 {
-                  row.error = companion->estimate(row, values[n]);
+                  row.error = companion->estimate(
+                    row, values[n], scene, control.local_slope(values[n]));
                   print_error_estimate(row, n + 1, nonlinear.communicator());
                 }
               if (rolling && rolling->enabled)

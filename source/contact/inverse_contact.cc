@@ -354,8 +354,10 @@ namespace rollnip
   Eigen::MatrixXd
   InverseContact::sensitivities(const Zone &zone, const Gaps &gaps)
   {
-    body.assemble(1., true);
-    body.factorize_tangent();
+    // The tangent is the one Newton factorised last in carry_pressure(),
+    // one Newton update away from the converged state: within its
+    // tolerance of the tangent there, which would cost another assembly
+    // and factorisation and change no converged nip.
     const auto                   &cs = *counter_surface;
     const double                  u0 = gaps.u0;
     TrilinosWrappers::MPI::Vector du(body.owned_solution());

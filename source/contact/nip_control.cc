@@ -353,7 +353,9 @@ namespace rollnip
   }
 
   ContactResult
-  NipControl::solve(const double target, const double guess)
+  NipControl::solve(const double target,
+                    const double guess,
+                    const double guess_slope)
   {
     const auto &c = parameters.contact;
     if (c.mode == Parameters::ContactMode::nip_angle)
@@ -366,10 +368,15 @@ namespace rollnip
                              Utilities::MPI::this_mpi_process(comm) == 0);
     const double       theta_max = contact.max_nip_angle();
 
-    double theta              = guess > 0           ? guess
-                                : converged.empty() ? cold_guess(target)
-                                                    : predict(target);
-    theta                     = std::min(theta, theta_max);
+    double theta = guess > 0           ? guess
+                   : converged.empty() ? cold_guess(target)
+                                       : predict(target);
+    theta        = std::min(theta, theta_max);
+    if (guess > 0 && guess_slope > 0)
+      {
+        slope_hint  = guess_slope;
+        hint_target = target;
+      }
     const double  first_theta = theta;
     double        failed_at   = std::numeric_limits<double>::max();
     unsigned int  n_retries   = 0;

@@ -41,12 +41,17 @@ namespace rollnip
   {
     Parameters::Element element;
     unsigned int        level;
-    double              cost; ///< relative: DoFs of the run's roll
+    /// relative: DoFs of the run's roll plus those of its error
+    /// estimate's companion, weighted by its measured relative cost
+    double cost;
   };
 
   /// The candidates, cheapest first: Q1-P0 at levels 0 to 4 and Q2-P1 at
-  /// levels 0 to 3, ordered by their DoFs on the builtin mesh (Q2-P1 has
-  /// about 3.5 times the DoFs of Q1-P0 at the same level).
+  /// levels 0 to 3, ordered by the DoFs on the builtin mesh of the run
+  /// and of its error estimate's companion (Q2-P1 has about 3.5 times the
+  /// DoFs of Q1-P0 at the same level; the companion of a level-0 run is
+  /// the finer level 1, so Q1-P0 at level 1 costs about as much as at
+  /// level 0).
   std::vector<AccuracyCandidate>
   accuracy_candidates();
 

@@ -24,8 +24,9 @@ namespace rollnip
    * the unknowns. The equations are zero gaps at those nodes (but the one
    * on the line of centres, which defines u0) and at theta0 itself. Newton
    * on the values: the gap sensitivities come from linearised solves with
-   * the converged tangent, one factorisation per iteration; the small dense
-   * system is solved with Eigen.
+   * the tangent that Newton factorised last on the way to the converged
+   * state (one Newton update from it); the small dense system is solved
+   * with Eigen.
    */
   class InverseContact : public NipSolver
   {
@@ -181,7 +182,8 @@ namespace rollnip
     std::string
     damp(const Zone &zone, const Gaps &gaps, Iterate &iterate, bool &retry);
 
-    /// d(gaps)/d(a): one factorisation, one linearised solve per knot.
+    /// d(gaps)/d(a): one linearised solve per knot with the last Newton
+    /// factorisation.
     Eigen::MatrixXd
     sensitivities(const Zone &zone, const Gaps &gaps);
 

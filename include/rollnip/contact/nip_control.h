@@ -39,9 +39,13 @@ namespace rollnip
 
     /// The nip for @p target: theta0 [rad] for Mode = nip angle, else P
     /// [N/mm] or u0 [mm]; the first theta0 tried is @p guess [rad] if
-    /// positive (the same nip on another mesh), else a prediction.
+    /// positive (the same nip on another mesh), else a prediction; the
+    /// secant from it takes the slope @p guess_slope (d log q / d log
+    /// theta0 of that other mesh) if positive.
     ContactResult
-    solve(const double target, const double guess = 0);
+    solve(const double target,
+          const double guess       = 0,
+          const double guess_slope = 0);
 
     /// Contact solves (inverse iterations) run so far, failed ones too.
     unsigned int
