@@ -49,6 +49,14 @@ namespace rollnip
                          Patterns::Integer(1, 1000),
                          "Semismooth Newton iterations per load step (the "
                          "active set and the displacements together)");
+      declare_documented(prm,
+                         "Axial grading",
+                         "1",
+                         Patterns::Double(1.),
+                         "Thickness of the layer at z = 0 over that of the "
+                         "layer at the far face z = Slice thickness; the "
+                         "layers thin geometrically towards the far face "
+                         "(a free cover end), 1: uniform");
       prm.leave_subsection();
     }
 
@@ -62,11 +70,16 @@ namespace rollnip
       fix_far_face          = prm.get("Far face") == "fixed axial";
       approach_step         = prm.get_double("Approach step");
       max_newton_iterations = prm.get_integer("Max Newton iterations");
+      axial_grading         = prm.get_double("Axial grading");
       prm.leave_subsection();
       AssertThrow(slice_thickness > 0 && slice_thickness <= 1e5,
                   ExcMessage("Three d/Slice thickness must lie in (0, 1e5] "
                              "mm, got " +
                              number(slice_thickness) + " mm"));
+      AssertThrow(axial_grading >= 1 && axial_grading <= 1e4,
+                  ExcMessage("Three d/Axial grading must lie in [1, 1e4], "
+                             "got " +
+                             number(axial_grading)));
       AssertThrow(approach_step > 0,
                   ExcMessage("Three d/Approach step must be positive"));
     }
