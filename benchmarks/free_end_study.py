@@ -18,20 +18,23 @@ thin-layer values for a strip with a parabolic gap (l = 0.665 a, the
 leading mode alone 2a/pi = 0.637 a, l^2 = 0.405 a^2; 95 % rise 1.95 a),
 the end bulge and the bond stresses at the bonded corner against z = 0.
 
-Usage: python3 benchmarks/free_end_study.py [--refine] [--np N] [NAME...]
-    --refine  one mesh level more in the cross-section and twice the
-              layers (the convergence of l)
-    --np N    run the 3D runs on N MPI processes (mpirun)
-    NAME      run only these scenes (h2, h6, ...)
+Usage: python3 benchmarks/free_end_study.py [--level N] [--layers K]
+                                            [--np N] [--table] [NAME...]
+    --level N   N mesh levels more in the cross-section (each halves the
+                cells in r and theta)
+    --layers K  K times the layers along the face (the same grading)
+    --np N      run the 3D runs on N MPI processes (mpirun)
+    --table     print the tables of the runs already made, run nothing
+    NAME        only these scenes (h13.5, h6, h2, h1, h0.6)
 Uses build/rollnip or $ROLLNIP_BIN; the outputs stay in
-output/free_end_study[_refined]/NAME/. About 15 minutes on one core.
+output/free_end_study[_levelN][_layersK]/NAME/. About 2 minutes on one
+core at the base meshes, 10 at --level 1 --layers 2.
 """
 
 import csv
 import os
 import subprocess
 import sys
-import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ROLLNIP = os.environ.get("ROLLNIP_BIN", os.path.join(ROOT, "build", "rollnip"))
@@ -43,7 +46,7 @@ R0 = 60.7
 # beyond the nip does not move) so that the nip gets cells.
 SCENES = [
     ("h13.5", 13.5, 0.5, 90, "free", 8, 18, 10, 0, 108, 24, 20),
-    ("h6", 6.0, 0.5, 45, "free", 6, 18, 10, 0, 48, 20, 15),
+    ("h6", 6.0, 0.5, 45, "free", 6, 18, 10, 0, 72, 24, 20),
     ("h2", 2.0, 0.2, 20, "free", 4, 18, 10, 0, 30, 20, 12),
     ("h1", 1.0, 0.12, 12, "free", 4, 18, 8, 0, 20, 20, 10),
     ("h0.6", 0.6, 0.08, 10, "free", 4, 18, 8, 0, 16, 20, 10),
@@ -98,10 +101,8 @@ def run(prm_text, directory, np=1):
     command = [ROLLNIP, prm]
     if np > 1:
         command = ["mpirun", "-np", str(np)] + command
-    start = time.time()
     with open(os.path.join(directory, "log.txt"), "w") as log:
         subprocess.run(command, stdout=log, stderr=subprocess.STDOUT, check=True)
-    return time.time() - start
 
 
 def summary(directory):
@@ -117,9 +118,6 @@ def summary(directory):
 def two_d(s, out):
     d = os.path.join(out, "2d")
     run(scene_prm(s, 2, "subsection Discretization\n  set Element = Q2-P1\nend\n"), d)
-    with open(os.path.join(d, "nip_report.csv")) as f:
-        row = next(csv.DictReader(f))
-    return float(row["line_load_N_per_mm"]), float(row["nip_width_2b_mm"]) / 2
 
 
 def three_d(s, level, thickness, layers, grading, free, out, np):
@@ -132,46 +130,99 @@ def three_d(s, level, thickness, layers, grading, free, out, np):
   set Approach step   = {s[2] / 2}
 end
 """
-    seconds = run(scene_prm(s, level, block), out, np)
-    return summary(out), seconds
+    run(scene_prm(s, level, block), out, np)
 
 
-def main():
-    args = sys.argv[1:]
-    refine = "--refine" in args
-    np = 1
-    if "--np" in args:
-        np = int(args[args.index("--np") + 1])
-        del args[args.index("--np"):args.index("--np") + 2]
-    names = [a for a in args if not a.startswith("--")]
-    base = os.path.join(ROOT, "output", "free_end_study" + ("_refined" if refine else ""))
-    print("| h [mm] | u0 [mm] | a [mm] | a/h | P_2D [N/mm] | slice P | q(0) | q(0)/slice - 1 "
-          "| q(L)/q(0) | l [mm] | l/a | rise95/a | bulge u_z [mm] | corner shear [MPa] "
-          "| middle shear [MPa] | cells | DoFs | time [s] |")
-    print("|" + "---|" * 18)
+def read_csv(path):
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def shear_from_end(directory, distance):
+    """The largest bond shear of the plane at @p distance from the end
+    (linear between planes) [MPa]."""
+    rows = read_csv(os.path.join(directory, "bond_traction_along_axis.csv"))
+    z = [float(r["z_mm"]) for r in rows]
+    tau = [float(r["max_bond_shear_MPa"]) for r in rows]
+    target = z[-1] - distance
+    for j in range(len(z) - 1):
+        if z[j] <= target <= z[j + 1]:
+            t = (target - z[j]) / (z[j + 1] - z[j])
+            return tau[j] + t * (tau[j + 1] - tau[j])
+    return float("nan")
+
+
+def table(base, names):
+    """Prints the tables of the runs under @p base."""
+    print("| h [mm] | u0 [mm] | a [mm] | a/h | P_2D [N/mm] | slice P [N/mm] "
+          "| q(0)/slice - 1 | q(L)/q(0) | l [mm] | l/a | l_slice/a | rise95/a "
+          "| cells | DoFs | time [s] |")
+    print("|" + "---|" * 15)
+    ends = []
     for s in SCENES:
         if names and s[0] not in names:
             continue
         name, h, u0 = s[:3]
-        level, L, layers, grading = s[8:]
-        if refine:
-            level, layers = level + 1, 2 * layers
         out = os.path.join(base, name)
-        P2d, a = two_d(s, out)
-        sl, _ = three_d(s, level, 1.0, 1, 1, False, os.path.join(out, "slice"), np)
-        end, seconds = three_d(s, level, L, layers, grading, True,
-                               os.path.join(out, "end"), np)
-        P_slice = float(sl["nip_load_P_N_per_mm"])
+        row = read_csv(os.path.join(out, "2d", "nip_report.csv"))[0]
+        P2d, a = float(row["line_load_N_per_mm"]), float(row["nip_width_2b_mm"]) / 2
+        P_slice = float(summary(os.path.join(out, "slice"))["nip_load_P_N_per_mm"])
+        end = summary(os.path.join(out, "end"))
         q0 = float(end["line_load_middle_N_per_mm"])
         l = float(end["end_deficit_length_l_mm"])
-        print(f"| {h} | {u0} | {a:.3f} | {a / h:.2f} | {P2d:.5g} | {P_slice:.5g} | {q0:.5g} "
+        L = float(end["slice_thickness_mm"])
+        # The same deficit against the plane-strain slice's P.
+        l_slice = L * (1 - float(end["line_load_mean_N_per_mm"]) / P_slice)
+        print(f"| {h} | {u0} | {a:.3f} | {a / h:.2f} | {P2d:.5g} | {P_slice:.5g} "
               f"| {100 * (q0 / P_slice - 1):+.2f} % "
               f"| {float(end['line_load_end_N_per_mm']) / q0:.3f} | {l:.3f} | {l / a:.3f} "
-              f"| {float(end['end_rise_95_mm']) / a:.2f} | {float(end['end_bulge_uz_mm']):.4f} "
-              f"| {float(end['bond_shear_peak_MPa']):.4f} | {float(end['bond_shear_middle_MPa']):.4f} "
-              f"| {end['n_cells']} | {end['n_dofs']} | {seconds:.0f} |", flush=True)
+              f"| {l_slice / a:.3f} | {float(end['end_rise_95_mm']) / a:.2f} "
+              f"| {end['n_cells']} | {end['n_dofs']} | {float(end['wall_time_s']):.0f} |")
+        ends.append((h, u0, a, end, os.path.join(out, "end")))
     print(f"\nThin-layer strip (a/h large): l/a = {THIN_DEFICIT}, rise95/a = {THIN_RISE_95}; "
-          f"l^2 = 0.4 a^2 gives l/a = {0.4 ** 0.5:.3f}.")
+          f"l^2 = 0.4 a^2 gives l/a = {0.4 ** 0.5:.3f}.\n")
+    print("| h [mm] | a/h | bulge u_z [mm] | bulge/u0 | at r [mm], theta [deg] "
+          "| bond shear at corner node [MPa] | at h/2 from the end [MPa] "
+          "| at z = 0 [MPa] | sigma_rr min [MPa] at z [mm] | at z = 0 [MPa] "
+          "| sigma_rr max [MPa] at z [mm] |")
+    print("|" + "---|" * 11)
+    for h, u0, a, end, directory in ends:
+        bulge = float(end["end_bulge_uz_mm"])
+        print(f"| {h} | {a / h:.2f} | {bulge:.4f} | {bulge / u0:.2f} "
+              f"| {float(end['end_bulge_r_mm']):.2f}, {float(end['end_bulge_theta_deg']):.2f} "
+              f"| {float(end['bond_shear_peak_MPa']):.4f} "
+              f"| {shear_from_end(directory, h / 2):.4f} "
+              f"| {float(end['bond_shear_middle_MPa']):.4f} "
+              f"| {float(end['bond_compression_peak_sigma_rr_MPa']):.4f} at "
+              f"{float(end['bond_compression_peak_z_mm']):.1f} "
+              f"| {float(end['bond_compression_middle_sigma_rr_MPa']):.4f} "
+              f"| {float(end['bond_tension_peak_sigma_rr_MPa']):.4f} at "
+              f"{float(end['bond_tension_peak_z_mm']):.1f} |")
+
+
+def main():
+    args = sys.argv[1:]
+    options = {"--np": 1, "--level": 0, "--layers": 1}
+    for key in options:
+        if key in args:
+            options[key] = int(args[args.index(key) + 1])
+            del args[args.index(key):args.index(key) + 2]
+    np, more_levels, layer_factor = options["--np"], options["--level"], options["--layers"]
+    names = [a for a in args if not a.startswith("--")]
+    suffix = (f"_level{more_levels}" if more_levels else "") + \
+        (f"_layers{layer_factor}" if layer_factor > 1 else "")
+    base = os.path.join(ROOT, "output", "free_end_study" + suffix)
+    for s in SCENES:
+        if "--table" in args or (names and s[0] not in names):
+            continue
+        level, L, layers, grading = s[8:]
+        level, layers = level + more_levels, layers * layer_factor
+        out = os.path.join(base, s[0])
+        two_d(s, out)
+        three_d(s, level, 1.0, 1, 1, False, os.path.join(out, "slice"), np)
+        three_d(s, level, L, layers, grading, True, os.path.join(out, "end"), np)
+        print(f"{s[0]} done", file=sys.stderr, flush=True)
+    table(base, names)
 
 
 if __name__ == "__main__":
