@@ -27,8 +27,9 @@ Usage: python3 benchmarks/free_end_study.py [--level N] [--layers K]
     --table     print the tables of the runs already made, run nothing
     NAME        only these scenes (h13.5, h6, h2, h1, h0.6)
 Uses build/rollnip or $ROLLNIP_BIN; the outputs stay in
-output/free_end_study[_levelN][_layersK]/NAME/. About 2 minutes on one
-core at the base meshes, 10 at --level 1 --layers 2.
+output/free_end_study[_levelN][_layersK]/NAME/. About 3 minutes on one
+core at the base meshes on a shared machine, 14 for --level 1 --layers 2
+h2 h1.
 """
 
 import csv
