@@ -53,7 +53,8 @@ namespace rollnip
                       level,
                       three_d.slice_thickness,
                       three_d.layers,
-                      triangulation);
+                      triangulation,
+                      three_d.axial_grading);
       // c of the active-set rule: a nodal force per mm of gap of the order
       // of the cover's stiffness; any c > 0 gives the same converged set.
       active_set_scale = law.shear_modulus() * three_d.slice_thickness;

@@ -5,6 +5,7 @@
 
 #include <rollnip/geometry/cover_layers.h>
 #include <rollnip/geometry/roll_mesh.h>
+#include <rollnip/three_d/axial_grading.h>
 #include <rollnip/three_d/slice_mesh.h>
 
 #include <cmath>
@@ -32,7 +33,8 @@ namespace rollnip
                     const unsigned int                         level,
                     const double                               thickness,
                     const unsigned int                         layers,
-                    parallel::distributed::Triangulation<dim> &triangulation)
+                    parallel::distributed::Triangulation<dim> &triangulation,
+                    const double                               axial_grading)
     {
       AssertThrow(parameters.mesh.source == Parameters::MeshSource::builtin,
                   ExcMessage("Three d: Mesh/Source must be builtin (the "
@@ -44,7 +46,7 @@ namespace rollnip
       const std::vector<std::vector<double>> steps = {
         halved(radial_steps(parameters, parameters.mesh.radial_grading), level),
         halved(coarse_circumferential_steps(parameters), level),
-        std::vector<double>(layers, thickness / layers)};
+        axial_steps(thickness, layers, axial_grading)};
       // (r, theta, z) box; colorize gives ids 0..5 in the order of SliceIds.
       Triangulation<dim> coarse;
       GridGenerator::subdivided_hyper_rectangle(

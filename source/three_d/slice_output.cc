@@ -2,6 +2,7 @@
 #include <deal.II/numerics/data_component_interpretation.h>
 #include <deal.II/numerics/data_out.h>
 
+#include <rollnip/three_d/axial_grading.h>
 #include <rollnip/three_d/slice_body.h>
 
 #include <cmath>
@@ -13,21 +14,27 @@ namespace rollnip
     std::vector<std::pair<double, double>>
     SliceBody::line_load_profile() const
     {
-      // The layers are uniform: node plane j lies at z = j h.
-      const unsigned int  n = three_d.layers;
-      const double        h = three_d.slice_thickness / n;
-      std::vector<double> f(n + 1, 0.);
+      // Plane j of nodes at z_j; its share of the face is half the layers
+      // on either side (axial_grading.h).
+      const std::vector<double> z = axial_planes(three_d.slice_thickness,
+                                                 three_d.layers,
+                                                 three_d.axial_grading);
+      const unsigned int        n = three_d.layers;
+      std::vector<double>       f(n + 1, 0.);
       for (const auto &[x_dof, node] : surface)
         if (active.count(x_dof) && owned.is_element(x_dof))
-          f[std::lround(node.X[2] / h)] += reactions[x_dof];
+          f[nearest_plane(z, node.X[2])] += reactions[x_dof];
       const std::vector<double> local = f;
       Utilities::MPI::sum(ArrayView<const double>(local),
                           communicator,
                           ArrayView<double>(f));
       std::vector<std::pair<double, double>> profile;
       for (unsigned int j = 0; j <= n; ++j)
-        profile.emplace_back(j * h,
-                             -2. * f[j] / (j == 0 || j == n ? h / 2 : h));
+        {
+          const double width =
+            ((j < n ? z[j + 1] : z[j]) - (j > 0 ? z[j - 1] : z[j])) / 2.;
+          profile.emplace_back(z[j], -2. * f[j] / width);
+        }
       return profile;
     }
 

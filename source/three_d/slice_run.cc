@@ -1,6 +1,7 @@
 #include <deal.II/base/timer.h>
 
 #include <rollnip/output/atomic_file.h>
+#include <rollnip/three_d/free_end.h>
 #include <rollnip/three_d/slice_body.h>
 #include <rollnip/three_d/slice_run.h>
 
@@ -35,7 +36,8 @@ namespace rollnip
                   const Parameters::ThreeD        &three_d,
                   const three_d::SliceNip         &nip,
                   const double                     seconds,
-                  const unsigned int               processes)
+                  const unsigned int               processes,
+                  const three_d::FreeEnd          *free_end)
     {
       write_atomically(path, [&](std::ostream &out) {
         out << std::setprecision(8)
@@ -57,6 +59,8 @@ namespace rollnip
             << "active_nodes = " << nip.active_nodes << '\n'
             << "max_penetration_mm = " << nip.max_penetration << '\n'
             << "wall_time_s = " << seconds << '\n';
+        if (free_end)
+          three_d::write_free_end_summary(out, *free_end);
       });
     }
   } // namespace
@@ -85,6 +89,7 @@ namespace rollnip
       }
     std::vector<three_d::SliceNip> nips;
     std::vector<double>            seconds;
+    std::vector<three_d::FreeEnd>  free_ends; // Far face = free only
     for (const double u0 : parameters.contact.values)
       {
         Timer timer;
@@ -96,6 +101,8 @@ namespace rollnip
                     << nips.back().active_nodes << " active nodes, "
                     << nips.back().newton_steps << " Newton steps, "
                     << seconds.back() << " s" << std::endl;
+        if (!three_d.fix_far_face)
+          free_ends.push_back(three_d::evaluate_free_end(body, u0));
         if (parameters.output.write_vtu)
           body.write_vtu(directory, "slice_3d", nips.size() - 1);
       }
@@ -122,13 +129,22 @@ namespace rollnip
                                       core,
                                       nips.back().u0);
         write_table(directory + "/slice_3d.csv", nips, seconds);
+        if (!free_ends.empty())
+          {
+            three_d::write_free_end_table(directory + "/free_end.csv",
+                                          free_ends);
+            three_d::write_bond_along_axis(directory +
+                                             "/bond_traction_along_axis.csv",
+                                           free_ends.back());
+          }
         write_summary(directory + "/summary.txt",
                       body,
                       parameters,
                       three_d,
                       nips.back(),
                       total.wall_time(),
-                      Utilities::MPI::n_mpi_processes(communicator));
+                      Utilities::MPI::n_mpi_processes(communicator),
+                      free_ends.empty() ? nullptr : &free_ends.back());
       }
     return 0;
   }

@@ -60,6 +60,14 @@ namespace rollnip
                          "a muparser expression in z [mm] with the constant "
                          "pi. The bonded nodes at R1 move by -v(z) along "
                          "x1, so the local approach at z is u0 - v(z)");
+      declare_documented(prm,
+                         "Axial grading",
+                         "1",
+                         Patterns::Double(1.),
+                         "Thickness of the layer at z = 0 over that of the "
+                         "layer at the far face z = Slice thickness; the "
+                         "layers thin geometrically towards the far face "
+                         "(a free cover end), 1: uniform");
       prm.leave_subsection();
     }
 
@@ -76,11 +84,16 @@ namespace rollnip
       core_deflection       = prm.get("Core deflection");
       // Parses it: a bad expression is refused here, naming the entry.
       const three_d::CoreDeflection check_core(core_deflection);
+      axial_grading         = prm.get_double("Axial grading");
       prm.leave_subsection();
       AssertThrow(slice_thickness > 0 && slice_thickness <= 1e5,
                   ExcMessage("Three d/Slice thickness must lie in (0, 1e5] "
                              "mm, got " +
                              number(slice_thickness) + " mm"));
+      AssertThrow(axial_grading >= 1 && axial_grading <= 1e4,
+                  ExcMessage("Three d/Axial grading must lie in [1, 1e4], "
+                             "got " +
+                             number(axial_grading)));
       AssertThrow(approach_step > 0,
                   ExcMessage("Three d/Approach step must be positive"));
     }

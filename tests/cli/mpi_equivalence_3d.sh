@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# The 3D slice (parameters/slice_3d.prm, Three d) gives the same P(u0) and
-# contact sizes on one and on two MPI processes, and its parallel output is
-# one .pvtu record with a piece per process.
+# A 3D scene (parameters/slice_3d.prm, or free_end_3d.prm with its free
+# end's measures in summary.txt) gives the same P(u0) and contact sizes on
+# one and on two MPI processes, and its parallel output is one .pvtu record
+# with a piece per process.
 #
 # Usage: bash mpi_equivalence_3d.sh ROLLNIP MPIEXEC NUMDIFF PRM
 #

@@ -116,6 +116,36 @@ namespace rollnip
         return triangulation.n_global_active_cells();
       }
 
+      /// Read access for the free-end measures (free_end.h).
+      const DoFHandler<dim> &
+      get_dof_handler() const
+      {
+        return dof_handler;
+      }
+      /// The displacements and q, ghosted.
+      const TrilinosWrappers::MPI::Vector &
+      current_solution() const
+      {
+        return solution;
+      }
+      /// The unconstrained residual: at supported dofs the nodal forces
+      /// the supports apply to the cover [N], ghosted.
+      const TrilinosWrappers::MPI::Vector &
+      nodal_reactions() const
+      {
+        return reactions;
+      }
+      MPI_Comm
+      mpi_communicator() const
+      {
+        return communicator;
+      }
+      const Parameters::ThreeD &
+      three_d_parameters() const
+      {
+        return three_d;
+      }
+
     private:
       /// The three displacement dofs and the reference position of a
       /// vertex of the outer surface.

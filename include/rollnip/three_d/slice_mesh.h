@@ -34,7 +34,9 @@ namespace rollnip
      * 2D mesh level @p level is built into the coarse mesh by halving
      * every in-plane cell @p level times (in r and theta, as the polar
      * manifold refines the 2D mesh), so that the slice stays @p layers
-     * cells thick and its vertices are the 2D mesh's at that level. All
+     * cells thick and its vertices are the 2D mesh's at that level. The
+     * layers thin towards z = @p thickness by @p axial_grading
+     * (axial_grading.h). All
      * cells carry a cylindrical manifold about the roll axis (the z axis).
      */
     void
@@ -42,7 +44,8 @@ namespace rollnip
                     const unsigned int                         level,
                     const double                               thickness,
                     const unsigned int                         layers,
-                    parallel::distributed::Triangulation<dim> &triangulation);
+                    parallel::distributed::Triangulation<dim> &triangulation,
+                    const double axial_grading = 1.);
   } // namespace three_d
 } // namespace rollnip
 

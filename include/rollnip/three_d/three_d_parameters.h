@@ -26,6 +26,9 @@ namespace rollnip
       bool         fix_far_face;
       double       approach_step; ///< largest u0 increment per load step [mm]
       unsigned int max_newton_iterations;
+      /// Thickness of the first layer (z = 0) over the last (z = L), >= 1:
+      /// layers thinning geometrically towards the (free) far face.
+      double axial_grading = 1.;
 
       /// The rigid core's bending line v(z) [mm], away from the nip: a
       /// muparser expression in z [mm] (three_d/core_deflection.h).
