@@ -49,11 +49,13 @@ trap 'rm -rf "$work"' EXIT
 value() { awk -F' = ' -v k="$2" '$1 == k { print $2 }' "$1"; }
 
 # Each rank runs under its own /usr/bin/time, so that its peak resident
-# memory lands in mem.<rank> (Open MPI's or MPICH's rank variable).
+# memory lands in mem.<rank> (Open MPI's or MPICH's rank variable); the
+# time limit sits below time, which does not pass signals on to rollnip.
 cat > "$work/rank.sh" <<'RANK'
 #!/usr/bin/env bash
 rank="${OMPI_COMM_WORLD_RANK:-${PMI_RANK:-0}}"
-exec /usr/bin/time -f %M -o "$MEM_DIR/mem.$rank" "$@"
+exec /usr/bin/time -f %M -o "$MEM_DIR/mem.$rank" \
+  timeout --signal=KILL "$RUN_TIMEOUT" "$@"
 RANK
 chmod +x "$work/rank.sh"
 
@@ -94,12 +96,13 @@ PRM
       fi
     fi
     rc=0
-    MEM_DIR="$work/mem" /usr/bin/time -f %e -o "$work/elapsed" \
-      timeout --kill-after=10 "$run_timeout" \
+    MEM_DIR="$work/mem" RUN_TIMEOUT="$run_timeout" \
+      /usr/bin/time -f %e -o "$work/elapsed" \
+      timeout --kill-after=10 "$((run_timeout + 30))" \
       "${launcher[@]}" "$work/rank.sh" "$rollnip" "$prm" > "$work/log.txt" 2>&1 || rc=$?
     if [ "$rc" -ne 0 ]; then
       tail -n 5 "$work/log.txt" >&2
-      echo "scaling_3d: level $level, $layers layers, $np processes: failed (exit $rc, 124 = timeout after ${run_timeout} s)" >&2
+      echo "scaling_3d: level $level, $layers layers, $np processes: failed (exit $rc; 137 or 124: stopped after ${run_timeout} s)" >&2
       echo "$level,$layers,,$np,$oversub,,,,,,,$u0" >> "$csv"
       continue
     fi
