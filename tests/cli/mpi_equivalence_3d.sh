@@ -1,24 +1,29 @@
 #!/usr/bin/env bash
-# A 3D scene (parameters/slice_3d.prm, or free_end_3d.prm with its free
-# end's measures in summary.txt) gives the same P(u0) and contact sizes on
-# one and on two MPI processes, and its parallel output is one .pvtu record
-# with a piece per process.
+# A 3D scene (parameters/slice_3d.prm, or the bent core, short roller or
+# free end with their own outputs) gives the same P(u0) and contact sizes
+# on one and on NP MPI processes, and its parallel output is one .pvtu
+# record with a piece per process.
 #
-# Usage: bash mpi_equivalence_3d.sh ROLLNIP MPIEXEC NUMDIFF PRM
+# Usage: bash mpi_equivalence_3d.sh ROLLNIP MPIEXEC NUMDIFF PRM [NP]
 #
 # Runs PRM at mesh level 0 with two cells through the thickness (so that
 # the partition cuts the slice), once without mpirun and once with
-# 'MPIEXEC -np 2', and compares slice_3d.csv and summary.txt (without the
-# timings and the process count) with numdiff, relative 1e-8 (Newton stops
-# at a relative residual of 1e-10).
+# 'MPIEXEC -np NP' (default 2; Open MPI gets --oversubscribe, so NP may
+# exceed the cores), and compares slice_3d.csv and summary.txt (without
+# the timings and the process count) with numdiff, relative 1e-8 (Newton
+# stops at a relative residual of 1e-10).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-[ $# -eq 4 ] || fail "usage: mpi_equivalence_3d.sh ROLLNIP MPIEXEC NUMDIFF PRM"
+[ $# -eq 4 ] || [ $# -eq 5 ] ||
+  fail "usage: mpi_equivalence_3d.sh ROLLNIP MPIEXEC NUMDIFF PRM [NP]"
 rollnip="$(realpath "$1")"
 mpiexec="$2"
 numdiff="$3"
 scene="$(realpath "$4")"
+np="${5:-2}"
+[[ "$np" =~ ^[1-9][0-9]*$ ]] && [ "$np" -ge 2 ] ||
+  fail "NP must be an integer of at least 2, got '$np'"
 require_executable rollnip "$rollnip"
 require_executable "mpiexec (MPIEXEC_EXECUTABLE)" "$mpiexec"
 require_executable "numdiff (needed to compare the results)" "$numdiff"
@@ -47,20 +52,22 @@ make_prm parallel.prm out_parallel
 "$rollnip" serial.prm > serial.log 2>&1 || { cat serial.log; fail "the serial run failed"; }
 pass "serial run finished"
 rc=0
-timeout --kill-after=10 300 "$mpiexec" "${mpi_flags[@]}" -np 2 "$rollnip" \
+timeout --kill-after=10 300 "$mpiexec" "${mpi_flags[@]}" -np "$np" "$rollnip" \
   parallel.prm > parallel.log 2>&1 || rc=$?
-[ "$rc" -eq 0 ] || { cat parallel.log; fail "the run on 2 MPI processes failed (exit code $rc)"; }
-pass "run on 2 MPI processes finished"
+[ "$rc" -eq 0 ] || { cat parallel.log; fail "the run on $np MPI processes failed (exit code $rc)"; }
+pass "run on $np MPI processes finished"
 
 [ "$(summary_value out_serial/summary.txt mpi_processes)" -eq 1 ] &&
-  [ "$(summary_value out_parallel/summary.txt mpi_processes)" -eq 2 ] ||
-  fail "summary.txt does not report mpi_processes = 1 and 2"
-pass "summary.txt reports mpi_processes = 1 and 2"
+  [ "$(summary_value out_parallel/summary.txt mpi_processes)" -eq "$np" ] ||
+  fail "summary.txt does not report mpi_processes = 1 and $np"
+pass "summary.txt reports mpi_processes = 1 and $np"
 n="$(grep -c '<Piece ' out_parallel/slice_3d_00.pvtu)"
-[ "$n" -eq 2 ] || fail "out_parallel/slice_3d_00.pvtu has $n pieces, expected 2"
-[ -f out_parallel/slice_3d_00.0.vtu ] && [ -f out_parallel/slice_3d_00.1.vtu ] ||
-  fail "the two .vtu pieces of slice_3d_00.pvtu are missing"
-pass "slice_3d_00.pvtu names one piece per process, both written"
+[ "$n" -eq "$np" ] || fail "out_parallel/slice_3d_00.pvtu has $n pieces, expected $np"
+for ((rank = 0; rank < np; ++rank)); do
+  [ -f "out_parallel/slice_3d_00.$rank.vtu" ] ||
+    fail "the .vtu piece of rank $rank (out_parallel/slice_3d_00.$rank.vtu) is missing"
+done
+pass "slice_3d_00.pvtu names one piece per process, all $np written"
 
 for dir in out_serial out_parallel; do
   grep -v -E '^(wall_time_s|mpi_processes) =' "$dir/summary.txt" > "$dir/summary_compared.txt"
@@ -68,10 +75,10 @@ for dir in out_serial out_parallel; do
 done
 for f in summary_compared.txt slice_compared.csv; do
   if "$numdiff" --quiet -r 1e-8 -a 1e-12 -s $' \t\n,=' "out_serial/$f" "out_parallel/$f" > /dev/null; then
-    pass "$f: serial and 2 processes agree (rel 1e-8)"
+    pass "$f: serial and $np processes agree (rel 1e-8)"
   else
     "$numdiff" -r 1e-8 -a 1e-12 -s $' \t\n,=' "out_serial/$f" "out_parallel/$f" | tail -n 20 || true
-    fail "$f differs between 1 and 2 MPI processes"
+    fail "$f differs between 1 and $np MPI processes"
   fi
 done
 # The outputs a 3D scene adds: the contact patch, and the line load beside
@@ -79,10 +86,10 @@ done
 for f in contact_patch.txt core_deflection_along_axis.csv; do
   [ -f "out_serial/$f" ] || continue
   if "$numdiff" --quiet -r 1e-8 -a 1e-12 -s $' \t\n,=' "out_serial/$f" "out_parallel/$f" > /dev/null; then
-    pass "$f: serial and 2 processes agree (rel 1e-8)"
+    pass "$f: serial and $np processes agree (rel 1e-8)"
   else
     "$numdiff" -r 1e-8 -a 1e-12 -s $' \t\n,=' "out_serial/$f" "out_parallel/$f" | tail -n 20 || true
-    fail "$f differs between 1 and 2 MPI processes"
+    fail "$f differs between 1 and $np MPI processes"
   fi
 done
 echo "serial:   P = $(summary_value out_serial/summary.txt nip_load_P_N_per_mm) N/mm"

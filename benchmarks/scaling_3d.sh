@@ -1,0 +1,121 @@
+#!/usr/bin/env bash
+# Strong scaling and memory of the 3D plane-strain slice
+# (parameters/slice_3d.prm, doc/three_d.md): the sizes below on 1 and 2
+# MPI processes, and on 4 with --oversubscribe (more ranks than cores on a
+# 2-core machine: flagged "yes" in the table, not a scaling figure). One
+# table row per run; the same rows go to benchmarks/results/scaling_3d.csv
+# (or $SCALING_CSV).
+#
+# Usage: bash benchmarks/scaling_3d.sh [LEVEL:LAYERS ...]
+#   default sizes: 3:2 (about 0.10 M DoFs), 4:2 (0.41 M), 4:4 (0.71 M)
+# Environment: ROLLNIP_BIN (default build/rollnip), PROCESSES (default
+# "1 2 4"), U0 (the approaches, default "0.5" mm: one approach step, so
+# that a run is a few Newton steps), MPIEXEC (default mpirun),
+# RUN_TIMEOUT (seconds per run, default 900).
+#
+# Columns:
+#   level, layers   Mesh/Global refinements, Three d/Layers
+#   DoFs            n_dofs of summary.txt
+#   np, oversub     MPI processes; "yes" when np > nproc
+#   wall s          elapsed time of the whole command (mpirun, start-up,
+#                   mesh, the sweep, output), /usr/bin/time %e
+#   sweep s         wall_time_s of summary.txt (rollnip's own clock)
+#   Newton          Newton steps summed over the approaches (slice_3d.csv)
+#   peak MB/rank    largest peak resident memory of one rank
+#                   (/usr/bin/time %M around each rank)
+#   total MB        sum of the ranks' peaks (an upper bound: the peaks
+#                   need not coincide)
+#   P N/mm          nip load at the last approach (equal across np)
+set -euo pipefail
+
+repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+rollnip="$(realpath "${ROLLNIP_BIN:-$repo_root/build/rollnip}")"
+mpiexec="${MPIEXEC:-mpirun}"
+processes="${PROCESSES:-1 2 4}"
+u0="${U0:-0.5}"
+run_timeout="${RUN_TIMEOUT:-900}"
+csv="${SCALING_CSV:-$repo_root/benchmarks/results/scaling_3d.csv}"
+[ -x "$rollnip" ] || { echo "scaling_3d: error: no executable '$rollnip'" >&2; exit 1; }
+[ -x /usr/bin/time ] || { echo "scaling_3d: error: needs GNU time (/usr/bin/time)" >&2; exit 1; }
+sizes=("$@")
+[ ${#sizes[@]} -gt 0 ] || sizes=(3:2 4:2 4:4)
+if [ "$(id -u)" -eq 0 ]; then
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+fi
+cores="$(nproc)"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+
+value() { awk -F' = ' -v k="$2" '$1 == k { print $2 }' "$1"; }
+
+# Each rank runs under its own /usr/bin/time, so that its peak resident
+# memory lands in mem.<rank> (Open MPI's or MPICH's rank variable); the
+# time limit sits below time, which does not pass signals on to rollnip.
+cat > "$work/rank.sh" <<'RANK'
+#!/usr/bin/env bash
+rank="${OMPI_COMM_WORLD_RANK:-${PMI_RANK:-0}}"
+exec /usr/bin/time -f %M -o "$MEM_DIR/mem.$rank" \
+  timeout --signal=KILL "$RUN_TIMEOUT" "$@"
+RANK
+chmod +x "$work/rank.sh"
+
+mkdir -p "$(dirname "$csv")"
+echo "level,layers,dofs,processes,oversubscribed,wall_time_s,sweep_time_s,newton_steps,peak_rss_per_rank_MB,peak_rss_total_MB,P_N_per_mm,u0_mm" > "$csv"
+printf '%5s %6s %9s %3s %7s %8s %8s %6s %12s %9s %10s\n' level layers DoFs np oversub "wall s" "sweep s" Newton "peak MB/rank" "total MB" "P N/mm"
+for size in "${sizes[@]}"; do
+  level="${size%%:*}"
+  layers="${size##*:}"
+  for np in $processes; do
+    out="$work/out"
+    rm -rf "$out" "$work/mem"
+    mkdir -p "$work/mem"
+    prm="$work/run.prm"
+    cp "$repo_root/parameters/slice_3d.prm" "$prm"
+    cat >> "$prm" <<PRM
+subsection Mesh
+  set Global refinements = $level
+end
+subsection Three d
+  set Layers = $layers
+end
+subsection Contact
+  set Values = $u0
+end
+subsection Output
+  set Directory = $out
+  set Write VTU = false
+end
+PRM
+    oversub=no
+    launcher=()
+    if [ "$np" -gt 1 ]; then
+      launcher=("$mpiexec" -np "$np")
+      if [ "$np" -gt "$cores" ]; then
+        oversub=yes
+        launcher+=(--oversubscribe)
+      fi
+    fi
+    rc=0
+    MEM_DIR="$work/mem" RUN_TIMEOUT="$run_timeout" \
+      /usr/bin/time -f %e -o "$work/elapsed" \
+      timeout --kill-after=10 "$((run_timeout + 30))" \
+      "${launcher[@]}" "$work/rank.sh" "$rollnip" "$prm" > "$work/log.txt" 2>&1 || rc=$?
+    if [ "$rc" -ne 0 ]; then
+      tail -n 5 "$work/log.txt" >&2
+      echo "scaling_3d: level $level, $layers layers, $np processes: failed (exit $rc; 137 or 124: stopped after ${run_timeout} s)" >&2
+      echo "$level,$layers,,$np,$oversub,,,,,,,$u0" >> "$csv"
+      continue
+    fi
+    s="$out/summary.txt"
+    dofs="$(value "$s" n_dofs)"
+    sweep="$(value "$s" wall_time_s)"
+    P="$(value "$s" nip_load_P_N_per_mm)"
+    newton="$(awk -F, 'NR > 1 { n += $6 } END { print n }' "$out/slice_3d.csv")"
+    elapsed="$(tail -n 1 "$work/elapsed")"
+    read -r peak total < <(cat "$work"/mem/mem.* | awk '$1 ~ /^[0-9]+$/ { if ($1 > m) m = $1; t += $1 } END { printf "%.0f %.0f\n", m / 1024, t / 1024 }')
+    printf '%5d %6d %9d %3d %7s %8.1f %8.1f %6d %12d %9d %10.6f\n' \
+      "$level" "$layers" "$dofs" "$np" "$oversub" "$elapsed" "$sweep" "$newton" "$peak" "$total" "$P"
+    echo "$level,$layers,$dofs,$np,$oversub,$elapsed,$sweep,$newton,$peak,$total,$P,$u0" >> "$csv"
+  done
+done
+echo "CSV: $csv"
