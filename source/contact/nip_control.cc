@@ -49,6 +49,27 @@ namespace rollnip
       return s.str();
     }
 
+    /// Why the iteration on theta0 ended without meeting its target:
+    /// @p closest is the nearest relative miss of a converged nip (inf if
+    /// none converged), @p last the last failed solve's message.
+    std::string
+    stall_reason(const double               closest,
+                 const std::string         &quantity,
+                 const Parameters::Contact &c,
+                 const std::string         &last)
+    {
+      std::ostringstream why;
+      why << std::setprecision(3);
+      if (std::isfinite(closest))
+        why << "the iteration on theta0 stalled at |" << quantity
+            << " / target - 1| = " << closest << " (Contact/Control tolerance "
+            << c.control_tolerance << ") after " << c.max_iterations
+            << " contact solves (Contact/Maximum iterations): raise either";
+      else
+        why << "no contact solve converged in the " << c.max_iterations
+            << " of Contact/Maximum iterations (the last: " << last << ")";
+      return why.str();
+    }
   } // namespace
 
   NipControl::NipControl(NipSolver &contact, const Parameters::AllParameters &p)
@@ -448,17 +469,9 @@ namespace rollnip
           }
         theta = next_theta(target, theta, std::min(failed_at, theta_max));
       }
-    std::ostringstream why;
-    why << std::setprecision(3);
-    if (std::isfinite(closest))
-      why << "the iteration on theta0 stalled at |" << quantity()
-          << " / target - 1| = " << closest << " (Contact/Control tolerance "
-          << c.control_tolerance << ") after " << c.max_iterations
-          << " contact solves (Contact/Maximum iterations): raise either";
-    else
-      why << "no contact solve converged in the " << c.max_iterations
-          << " of Contact/Maximum iterations (the last: " << r.message << ")";
-    return stop_short(r, target, why.str());
+    return stop_short(r,
+                      target,
+                      stall_reason(closest, quantity(), c, r.message));
   }
 
   ContactResult

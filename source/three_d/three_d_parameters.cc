@@ -84,7 +84,7 @@ namespace rollnip
       core_deflection       = prm.get("Core deflection");
       // Parses it: a bad expression is refused here, naming the entry.
       const three_d::CoreDeflection check_core(core_deflection);
-      axial_grading         = prm.get_double("Axial grading");
+      axial_grading = prm.get_double("Axial grading");
       prm.leave_subsection();
       AssertThrow(slice_thickness > 0 && slice_thickness <= 1e5,
                   ExcMessage("Three d/Slice thickness must lie in (0, 1e5] "

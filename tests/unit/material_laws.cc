@@ -41,6 +41,63 @@ namespace
     m.theory   = theory;
     return m;
   }
+  /// The factory: per-layer constants, the theory's law; the linear law
+  /// affine in F; commit() and rollback() of an elastic law.
+  void
+  check_factory(testing::Checker &check, std::mt19937 &gen)
+  {
+    const Tensor<2, dim> I  = unit_symmetric_tensor<dim>();
+    const Tensor<2, dim> F  = I + random_tensor(gen, 0.3);
+    const Tensor<2, dim> dF = random_tensor(gen, 1.);
+    for (const auto theory :
+         {Parameters::Theory::nonlinear, Parameters::Theory::linear})
+      {
+        const Parameters::Material m = two_layers(theory);
+        MaterialTable              table(m);
+        const bool                 lin   = theory == Parameters::Theory::linear;
+        const std::string          name  = lin ? "linear" : "nonlinear";
+        double                     d_law = 0;
+        for (unsigned int j = 0; j < 2; ++j)
+          {
+            const auto           law = make_layer_law(m, j);
+            const double         Gj  = 2 * (m.layer_C1[j] + m.layer_C2[j]);
+            const Tensor<2, dim> expected =
+              lin ? LinearElasticLaw<2>(Gj).piola(F, 0.7)
+                  : MooneyRivlinLaw<2>(m.layer_C1[j], m.layer_C2[j])
+                      .piola(F, 0.7);
+            d_law = std::max({d_law,
+                              (law->piola(F, 0.7) - expected).norm(),
+                              (table[j].piola(F, 0.7) - expected).norm(),
+                              std::abs(table[j].shear_modulus() - Gj)});
+          }
+        check.check(d_law < 1e-15 && table.n_layers() == 2 &&
+                      table.is_linear() == lin,
+                    name +
+                      " theory: each layer's law and modulus from the "
+                      "factory and the table, max diff " +
+                      testing::num(d_law));
+        // Linear theory: P is affine in F, so dP[dF] = P(F + dF) - P(F).
+        const double affine =
+          (table[1].piola(F + dF, 0.7) - table[1].piola(F, 0.7) -
+           table[1].piola_derivative(F, 0.7, dF))
+            .norm() /
+          dF.norm();
+        check.check(lin ? affine < 1e-14 : affine > 1e-3,
+                    name + " theory: |P(F + dF) - P(F) - dP[dF]| / |dF| = " +
+                      testing::num(affine) +
+                      (lin ? " (affine law)" : " (nonlinear law)"));
+
+        const Tensor<2, dim> before = table[0].piola(F, 0.7);
+        table.commit();
+        const Tensor<2, dim> committed = table[0].piola(F, 0.7);
+        table.rollback();
+        const Tensor<2, dim> rolled_back = table[0].piola(F, 0.7);
+        check.check((committed - before).norm() == 0 &&
+                      (rolled_back - before).norm() == 0,
+                    name + " theory: commit() and rollback() leave the "
+                           "elastic law unchanged");
+      }
+  }
 } // namespace
 
 int
@@ -92,56 +149,6 @@ main()
               "diff / eps^2 " +
                 testing::num(d_c));
 
-  // The factory: per-layer constants, the theory's law.
-  const Tensor<2, dim> F  = I + random_tensor(gen, 0.3);
-  const Tensor<2, dim> dF = random_tensor(gen, 1.);
-  for (const auto theory :
-       {Parameters::Theory::nonlinear, Parameters::Theory::linear})
-    {
-      const Parameters::Material m = two_layers(theory);
-      MaterialTable              table(m);
-      const bool                 lin   = theory == Parameters::Theory::linear;
-      const std::string          name  = lin ? "linear" : "nonlinear";
-      double                     d_law = 0;
-      for (unsigned int j = 0; j < 2; ++j)
-        {
-          const auto           law = make_layer_law(m, j);
-          const double         Gj  = 2 * (m.layer_C1[j] + m.layer_C2[j]);
-          const Tensor<2, dim> expected =
-            lin
-              ? LinearElasticLaw<2>(Gj).piola(F, 0.7)
-              : MooneyRivlinLaw<2>(m.layer_C1[j], m.layer_C2[j]).piola(F, 0.7);
-          d_law = std::max({d_law,
-                            (law->piola(F, 0.7) - expected).norm(),
-                            (table[j].piola(F, 0.7) - expected).norm(),
-                            std::abs(table[j].shear_modulus() - Gj)});
-        }
-      check.check(d_law < 1e-15 && table.n_layers() == 2 &&
-                    table.is_linear() == lin,
-                  name +
-                    " theory: each layer's law and modulus from the "
-                    "factory and the table, max diff " +
-                    testing::num(d_law));
-      // Linear theory: P is affine in F, so dP[dF] = P(F + dF) - P(F).
-      const double affine =
-        (table[1].piola(F + dF, 0.7) - table[1].piola(F, 0.7) -
-         table[1].piola_derivative(F, 0.7, dF))
-          .norm() /
-        dF.norm();
-      check.check(lin ? affine < 1e-14 : affine > 1e-3,
-                  name + " theory: |P(F + dF) - P(F) - dP[dF]| / |dF| = " +
-                    testing::num(affine) +
-                    (lin ? " (affine law)" : " (nonlinear law)"));
-
-      const Tensor<2, dim> before = table[0].piola(F, 0.7);
-      table.commit();
-      const Tensor<2, dim> committed = table[0].piola(F, 0.7);
-      table.rollback();
-      const Tensor<2, dim> rolled_back = table[0].piola(F, 0.7);
-      check.check((committed - before).norm() == 0 &&
-                    (rolled_back - before).norm() == 0,
-                  name + " theory: commit() and rollback() leave the "
-                         "elastic law unchanged");
-    }
+  check_factory(check, gen);
   return check.result();
 }
