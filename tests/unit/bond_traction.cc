@@ -32,20 +32,12 @@ namespace
         const unsigned int level,
         const bool         layered)
   {
-    return "subsection Geometry\n set Inner radius = 47.2\n"
-           " set Outer radius = 60.7\n set Sector angle = 90\nend\n"
-           "subsection Mesh\n set Source = builtin\n set Radial cells = 6\n"
-           " set Circumferential cells = 24\n"
-           " set Circumferential grading = 10\n set Global refinements = " +
-           std::to_string(level) +
-           "\nend\n"
-           "subsection Discretization\n set Element = " +
-           element + "\nend\n" +
+    return testing::run30_cover() + testing::graded_mesh(6, 24, level) +
+           "subsection Discretization\n set Element = " + element + "\nend\n" +
            (layered ? "subsection Material\n set C1 = 2.0, 0.25\n"
                       " set C2 = 0.5, 0.05\n set Layer thicknesses = 3, 10.5\n"
                       "end\n"
-                    : "subsection Material\n set C1 = 0.25\n set C2 = 0.25\n"
-                      "end\n") +
+                    : "") +
            "subsection Boundary conditions\n set Inner arc (id 0) = fixed\n"
            " set Outer arc (id 1) = pressure\n"
            " set Symmetry edge (id 2) = symmetry\n"

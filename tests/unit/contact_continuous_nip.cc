@@ -22,11 +22,7 @@ using namespace rollnip;
 namespace
 {
   const std::string default_scene =
-    "subsection Geometry\n set Inner radius = 47.2\n set Outer radius = 60.7\n"
-    " set Sector angle = 90\nend\n"
-    "subsection Mesh\n set Radial cells = 6\n set Circumferential cells = 24\n"
-    " set Circumferential grading = 10\n set Global refinements = 2\nend\n"
-    "subsection Material\n set C1 = 0.25\n set C2 = 0.25\nend\n"
+    testing::run30_cover() + testing::graded_mesh(6, 24, 2) +
     "subsection Contact\n set Mode = nip angle\n set Values = 4\n"
     " set Indenter radius = 76.2\n set Conformity tolerance = 1e-8\nend\n";
 

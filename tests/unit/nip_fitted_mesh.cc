@@ -33,16 +33,7 @@ namespace
   std::string
   scene(const double sector, const unsigned int level)
   {
-    return "subsection Geometry\n set Inner radius = 47.2\n"
-           " set Outer radius = 60.7\n set Sector angle = " +
-           std::to_string(sector) +
-           "\nend\n"
-           "subsection Mesh\n set Radial cells = 6\n"
-           " set Circumferential cells = 24\n"
-           " set Circumferential grading = 10\n set Global refinements = " +
-           std::to_string(level) +
-           "\nend\n"
-           "subsection Material\n set C1 = 0.25\n set C2 = 0.25\nend\n"
+    return testing::run30_cover(sector) + testing::graded_mesh(6, 24, level) +
            "subsection Contact\n set Mode = nip angle\n set Values = 4\n"
            " set Indenter radius = 76.2\n set Conformity tolerance = 1e-8\n"
            "end\n";

@@ -21,15 +21,7 @@ using namespace rollnip;
 
 namespace
 {
-  const std::string scene =
-    "subsection Geometry\n set Inner radius = 47.2\n set Outer radius = "
-    "60.7\n set Sector angle = 90\nend\n"
-    "subsection Mesh\n set Radial cells = 8\n set Circumferential cells = "
-    "18\n set Circumferential grading = 10\nend\n"
-    "subsection Material\n set C1 = 0.25\n set C2 = 0.25\nend\n"
-    "subsection Boundary conditions\n set Far edge (id 3) = free\nend\n"
-    "subsection Contact\n set Mode = indentation\n set Values = 1\n"
-    " set Indenter radius = inf\nend\n";
+  const std::string scene = testing::run30_indentation_scene("1", "inf");
 
   Parameters::ThreeD
   roller(const double half_width, const unsigned int layers, const bool free)

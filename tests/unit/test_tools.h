@@ -96,6 +96,47 @@ namespace rollnip
     {
       return std::log(e_coarse / e_fine) / std::log(2.);
     }
+    /// Batra's run-30 cover as .prm text: radii 47.2 and 60.7 mm (13.5 mm
+    /// of rubber) on a @p sector_deg sector, C1 = C2 = 0.25 MPa.
+    inline std::string
+    run30_cover(const double sector_deg = 90)
+    {
+      return "subsection Geometry\n set Inner radius = 47.2\n"
+             " set Outer radius = 60.7\n set Sector angle = " +
+             num(sector_deg) +
+             "\nend\n"
+             "subsection Material\n set C1 = 0.25\n set C2 = 0.25\nend\n";
+    }
+
+    /// The builtin mesh graded towards the nip (grading 10): @p radial x
+    /// @p circumferential coarse cells, @p level global refinements.
+    inline std::string
+    graded_mesh(const unsigned int radial,
+                const unsigned int circumferential,
+                const unsigned int level)
+    {
+      return "subsection Mesh\n set Radial cells = " + std::to_string(radial) +
+             "\n set Circumferential cells = " +
+             std::to_string(circumferential) +
+             "\n set Circumferential grading = 10\n"
+             " set Global refinements = " +
+             std::to_string(level) + "\nend\n";
+    }
+
+    /// The scene of the 3D tests: the run-30 cover on the 8 x 18 graded
+    /// mesh at level 1, far edge free, pressed to the @p approaches [mm] by a
+    /// cylinder of radius @p indenter_radius [mm] ("inf": a flat).
+    inline std::string
+    run30_indentation_scene(const std::string &approaches,
+                            const std::string &indenter_radius = "76.2")
+    {
+      return run30_cover() + graded_mesh(8, 18, 1) +
+             "subsection Boundary conditions\n set Far edge (id 3) = free\n"
+             "end\n"
+             "subsection Contact\n set Mode = indentation\n set Values = " +
+             approaches + "\n set Indenter radius = " + indenter_radius +
+             "\nend\n";
+    }
   } // namespace testing
 } // namespace rollnip
 
