@@ -110,3 +110,61 @@ check_less()
     fail "$1 = $2 is not below $3"
   fi
 }
+
+# mpi_setup MPIEXEC: the flags of MPIEXEC in the array mpi_flags. Open MPI
+# refuses to start as root unless told (containers, CI), and gets
+# --oversubscribe so that two or more ranks start on a one-core machine.
+mpi_setup()
+{
+  if [ "$(id -u)" -eq 0 ]; then
+    export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+  fi
+  mpi_flags=()
+  local version
+  version="$("$1" --version 2>&1 || true)"
+  if [[ "$version" == *"Open MPI"* || "$version" == *OpenRTE* ||
+        "$version" == *open-mpi* ]]; then
+    mpi_flags+=(--oversubscribe)
+  fi
+}
+
+# write_long_sweep SCENE FILE: SCENE with 30 load targets (2, 4, .., 60) on
+# a small mesh, without VTU, into FILE: a sweep long enough to interrupt.
+write_long_sweep()
+{
+  cp "$1" "$2"
+  cat >> "$2" <<PRM
+
+# --- overrides of tests/cli/common.sh (write_long_sweep): many targets, a
+# small mesh
+subsection Mesh
+  set Global refinements = 1
+end
+subsection Contact
+  set Values = $(seq -s ', ' 2 2 60)
+  set Compare with linear theory = false
+end
+subsection Output
+  set Directory = out
+  set Write VTU = false
+  set Print timing = false
+end
+PRM
+}
+
+# start_until_nip2 COMMAND...: runs COMMAND run.prm in the background into
+# stdout.txt and stderr.txt (its pid in $pid) and returns once nip 2 has
+# converged; fails if the run ends or 90 s pass first.
+start_until_nip2()
+{
+  rm -rf out stdout.txt stderr.txt
+  "$@" run.prm > stdout.txt 2> stderr.txt &
+  pid=$!
+  for _ in $(seq 1 900); do
+    if grep -q '^Nip 2: P from' stdout.txt 2> /dev/null; then return 0; fi
+    kill -0 "$pid" 2> /dev/null || break
+    sleep 0.1
+  done
+  cat stdout.txt stderr.txt
+  fail "the sweep did not reach nip 2"
+}

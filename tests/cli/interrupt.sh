@@ -15,33 +15,9 @@ require_executable rollnip "$rollnip"
 [ -f "$scene" ] || fail "parameter file '$scene' not found"
 start_test interrupt
 
-cp "$scene" run.prm
-cat >> run.prm <<PRM
-
-# --- overrides of tests/cli/interrupt.sh: many targets, a small mesh
-subsection Mesh
-  set Global refinements = 1
-end
-subsection Contact
-  set Values = $(seq -s ', ' 2 2 60)
-  set Compare with linear theory = false
-end
-subsection Output
-  set Directory = out
-  set Write VTU = false
-  set Print timing = false
-end
-PRM
-
-"$rollnip" run.prm > stdout.txt 2> stderr.txt &
-pid=$!
-# Wait for the second nip, then interrupt the third or a later one.
-for _ in $(seq 1 600); do
-  if grep -q '^Nip 2: P from' stdout.txt; then break; fi
-  kill -0 "$pid" 2> /dev/null || break
-  sleep 0.1
-done
-grep -q '^Nip 2: P from' stdout.txt || { cat stdout.txt stderr.txt; fail "the sweep did not reach nip 2"; }
+write_long_sweep "$scene" run.prm
+# Interrupt the third nip or a later one.
+start_until_nip2 "$rollnip"
 kill -INT "$pid"
 rc=0
 wait "$pid" || rc=$?

@@ -34,16 +34,7 @@ require_executable "numdiff (needed to compare the results)" "$numdiff"
 [ -f "$scene" ] || fail "parameter file '$scene' not found"
 start_test "mpi_equivalence_$(basename "$scene" .prm)_$method"
 
-# Open MPI refuses to start as root unless told (containers, CI).
-if [ "$(id -u)" -eq 0 ]; then
-  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-fi
-mpi_flags=()
-mpi_version="$("$mpiexec" --version 2>&1 || true)"
-if [[ "$mpi_version" == *"Open MPI"* || "$mpi_version" == *OpenRTE* ||
-      "$mpi_version" == *open-mpi* ]]; then
-  mpi_flags+=(--oversubscribe) # two ranks even on a one-core machine
-fi
+mpi_setup "$mpiexec"
 
 make_prm()
 {

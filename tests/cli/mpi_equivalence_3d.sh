@@ -29,15 +29,7 @@ require_executable "mpiexec (MPIEXEC_EXECUTABLE)" "$mpiexec"
 require_executable "numdiff (needed to compare the results)" "$numdiff"
 start_test "mpi_equivalence_3d"
 
-if [ "$(id -u)" -eq 0 ]; then
-  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-fi
-mpi_flags=()
-mpi_version="$("$mpiexec" --version 2>&1 || true)"
-if [[ "$mpi_version" == *"Open MPI"* || "$mpi_version" == *OpenRTE* ||
-      "$mpi_version" == *open-mpi* ]]; then
-  mpi_flags+=(--oversubscribe)
-fi
+mpi_setup "$mpiexec"
 
 make_prm()
 {

@@ -28,17 +28,11 @@ for f in "$@"; do
   cp "$f" .
 done
 
-if [ "$(id -u)" -eq 0 ]; then
-  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-fi
-flags=()
-if [[ "$("$mpiexec" --version 2>&1 || true)" == *"Open MPI"* ]]; then
-  flags+=(--oversubscribe)
-fi
+mpi_setup "$mpiexec"
 limit=60
-echo "running: $mpiexec ${flags[*]} -np 2 rollnip $prm (limit $limit s)"
+echo "running: $mpiexec ${mpi_flags[*]} -np 2 rollnip $prm (limit $limit s)"
 rc=0
-timeout --kill-after=10 "$limit" "$mpiexec" "${flags[@]}" -np 2 "$rollnip" "$prm" \
+timeout --kill-after=10 "$limit" "$mpiexec" "${mpi_flags[@]}" -np 2 "$rollnip" "$prm" \
   > stdout.txt 2> stderr.txt || rc=$?
 echo "--- standard error:"
 cat stderr.txt

@@ -23,48 +23,9 @@ require_executable "mpiexec (MPIEXEC_EXECUTABLE)" "$mpiexec"
 [ -f "$scene" ] || fail "parameter file '$scene' not found"
 start_test mpi_interrupt
 
-if [ "$(id -u)" -eq 0 ]; then
-  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-fi
-mpi=("$mpiexec")
-if [[ "$("$mpiexec" --version 2>&1 || true)" == *"Open MPI"* ]]; then
-  mpi+=(--oversubscribe)
-fi
-mpi+=(-np 2)
-
-cp "$scene" run.prm
-cat >> run.prm <<PRM
-
-# --- overrides of tests/cli/mpi_interrupt.sh: many targets, a small mesh
-subsection Mesh
-  set Global refinements = 1
-end
-subsection Contact
-  set Values = $(seq -s ', ' 2 2 60)
-  set Compare with linear theory = false
-end
-subsection Output
-  set Directory = out
-  set Write VTU = false
-  set Print timing = false
-end
-PRM
-
-# start_run COMMAND...: runs it in the background into stdout.txt and
-# stderr.txt (pid in $pid) and waits until nip 2 has converged.
-start_run()
-{
-  rm -rf out stdout.txt stderr.txt
-  "$@" run.prm > stdout.txt 2> stderr.txt &
-  pid=$!
-  for _ in $(seq 1 900); do
-    if grep -q '^Nip 2: P from' stdout.txt 2> /dev/null; then return 0; fi
-    kill -0 "$pid" 2> /dev/null || break
-    sleep 0.1
-  done
-  cat stdout.txt stderr.txt
-  fail "the sweep did not reach nip 2"
-}
+mpi_setup "$mpiexec"
+mpi=("$mpiexec" "${mpi_flags[@]}" -np 2)
+write_long_sweep "$scene" run.prm
 
 # check_tables AT_LEAST: both tables whole (every row as many fields as the
 # header), the same number of rows, at least AT_LEAST, each a converged
@@ -92,7 +53,7 @@ check_tables()
 }
 
 # 1. One SIGINT to mpirun.
-start_run "${mpi[@]}" "$rollnip"
+start_until_nip2 "${mpi[@]}" "$rollnip"
 kill -INT "$pid"
 rc=0
 wait "$pid" || rc=$?
@@ -118,10 +79,10 @@ pass "mpirun: stopped during nip $stopped of 30; both tables list the $rows conv
 # 2. Two SIGTERMs to mpirun, 0.2 s apart; 3. two SIGINTs to one process.
 for launch in mpi single; do
   if [ "$launch" = mpi ]; then
-    start_run "${mpi[@]}" "$rollnip"
+    start_until_nip2 "${mpi[@]}" "$rollnip"
     signal=TERM
   else
-    start_run "$rollnip"
+    start_until_nip2 "$rollnip"
     signal=INT
   fi
   kill -"$signal" "$pid"
