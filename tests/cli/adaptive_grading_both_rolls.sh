@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
-# Adaptive grading re-cuts the mating roll's cells too when its own
-# Mating roll/Mesh/Adaptive grading passes asks for it: from its solved
-# state in the two-roll nip, in the same passes as the first roll's.
+# Adaptive grading of a scene with a covered mating roll grades on that
+# scene: its passes solve the two-roll nip (TwoRollContact), not the nip
+# against a rigid circle of the mating roll's radius. It re-cuts the mating
+# roll's cells too when its own Mating roll/Mesh/Adaptive grading passes
+# asks for it: from its solved state in the two-roll nip, in the same
+# passes as the first roll's.
 #
 # Usage: bash adaptive_grading_both_rolls.sh ROLLNIP PRM
 #
@@ -10,8 +13,10 @@
 # widest 8 times the narrowest: 1.46 deg at the line of centres before
 # grading), one nip (20 kN/m), no error estimate and no VTU files.
 #
-# Asserts: exit code 0, nothing on standard error; one "Adaptive grading,
-# pass 1" line for each roll; the mating roll's first coarse cell after
+# Asserts: exit code 0, nothing on standard error; the screen before
+# "Adaptive grading, pass 1" shows the two-roll outer iteration ("Two-roll
+# contact"), which a solve against a rigid circle never prints, and so does
+# the real run after it; one "Adaptive grading, pass 1" line for each roll; the mating roll's first coarse cell after
 # grading is narrower than half its contact zone (asin(b / R_mate), b the
 # half-chord of nip_characteristic.csv) and differs from the ungraded
 # 1.46 deg; the real run used those cells: the first surface node of the
@@ -59,6 +64,14 @@ pass "exit code 0"
 pass "nothing on standard error"
 
 grep "^Adaptive grading" stdout.txt
+grading="$(sed -n '1,/^Adaptive grading, pass 1/p' stdout.txt)"
+run="$(sed -n '/^Adaptive grading, pass 1/,$p' stdout.txt)"
+grep -q "^Two-roll contact" <<< "$grading" ||
+  fail "the grading pass did not solve the two-roll nip (no 'Two-roll contact' line before 'Adaptive grading, pass 1')"
+pass "the grading pass solved the two-roll nip: $(grep -c "^Two-roll contact" <<< "$grading") two-roll solve(s)"
+grep -q "^Two-roll contact" <<< "$run" ||
+  fail "the run after grading did not solve the two-roll nip"
+pass "the graded run solved the two-roll nip"
 grep -q "^Adaptive grading, pass 1: coarse cells" stdout.txt ||
   fail "the first roll was not graded"
 line="$(grep "^Adaptive grading, pass 1 (mating roll): coarse cells from" stdout.txt)" ||
