@@ -10,6 +10,8 @@
 
 #include <rollnip/postprocess/stress_state.h>
 
+#include <rollnip/fe_fields.h>
+
 #include "test_tools.h"
 
 using namespace rollnip;
@@ -45,26 +47,27 @@ main(int argc, char **argv)
         const MaterialTable materials(parameters.material);
         const unsigned int  degree =
           parameters.discretization.displacement_degree();
-        const QGauss<dim>                quadrature(degree + 1);
-        MappingQ<dim>                    mapping(degree);
-        FEValues<dim>                    fe_values(mapping,
+        const QGauss<dim> quadrature =
+          FEFields::cell_quadrature(problem.dofs().get_fe());
+        MappingQ<dim>               mapping(degree);
+        FEValues<dim>               fe_values(mapping,
                                 problem.dofs().get_fe(),
                                 quadrature,
                                 update_values | update_gradients |
                                   update_quadrature_points);
-        const FEValuesExtractors::Vector u_ex(0);
-        const FEValuesExtractors::Scalar q_ex(dim);
-        std::vector<Tensor<1, dim>>      u(quadrature.size());
-        std::vector<Tensor<2, dim>>      grad_u(quadrature.size());
-        std::vector<double>              qv(quadrature.size());
-        double                           max_u = 0, max_stress_error = 0;
+        std::vector<Tensor<1, dim>> u(quadrature.size());
+        std::vector<Tensor<2, dim>> grad_u(quadrature.size());
+        std::vector<double>         qv(quadrature.size());
+        double                      max_u = 0, max_stress_error = 0;
         for (const auto &cell : problem.dofs().active_cell_iterators())
           {
             fe_values.reinit(cell);
-            fe_values[u_ex].get_function_values(problem.current_solution(), u);
-            fe_values[u_ex].get_function_gradients(problem.current_solution(),
-                                                   grad_u);
-            fe_values[q_ex].get_function_values(problem.current_solution(), qv);
+            fe_values[FEFields::displacement].get_function_values(
+              problem.current_solution(), u);
+            fe_values[FEFields::displacement].get_function_gradients(
+              problem.current_solution(), grad_u);
+            fe_values[FEFields::pressure].get_function_values(
+              problem.current_solution(), qv);
             for (unsigned int k = 0; k < quadrature.size(); ++k)
               {
                 const StressState s =

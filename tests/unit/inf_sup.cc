@@ -23,6 +23,8 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseLU>
 
+#include <rollnip/fe_fields.h>
+
 #include "test_tools.h"
 
 using namespace rollnip;
@@ -155,9 +157,8 @@ namespace
     MappingQ<dim>                        mapping(2);
     FEValues<dim>                        fe_values(mapping,
                             fe,
-                            QGauss<dim>(fe.degree + 1),
+                            FEFields::cell_quadrature(fe),
                             update_values | update_JxW_values);
-    const FEValuesExtractors::Scalar     pressure(dim);
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     const auto                           n_p = blocks.p_dofs.size();
     Eigen::MatrixXd                      M   = Eigen::MatrixXd::Zero(n_p, n_p);
@@ -171,8 +172,8 @@ namespace
                 fe.system_to_component_index(j).first == dim)
               for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
                 M(blocks.block_index[dofs[i]], blocks.block_index[dofs[j]]) +=
-                  fe_values[pressure].value(i, q) *
-                  fe_values[pressure].value(j, q) * fe_values.JxW(q);
+                  fe_values[FEFields::pressure].value(i, q) *
+                  fe_values[FEFields::pressure].value(j, q) * fe_values.JxW(q);
       }
     return M;
   }
@@ -268,7 +269,7 @@ namespace
     MappingQ<dim>       mapping(2);
     FEValues<dim>       fe_values(mapping,
                             fe,
-                            QGauss<dim>(fe.degree + 1),
+                            FEFields::cell_quadrature(fe),
                             update_values | update_JxW_values);
     std::vector<double> q(fe_values.n_quadrature_points);
     std::vector<double> mean(dof_handler.get_triangulation().n_active_cells());
@@ -283,7 +284,7 @@ namespace
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         fe_values.reinit(cell);
-        fe_values[FEValuesExtractors::Scalar(dim)].get_function_values(
+        fe_values[FEFields::pressure].get_function_values(
           problem.current_solution(), q);
         double integral = 0;
         for (unsigned int k = 0; k < q.size(); ++k)
