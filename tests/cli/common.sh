@@ -128,6 +128,19 @@ mpi_setup()
   fi
 }
 
+# quiet_output: the .prm lines that send a run's files to out/, without
+# VTU files or timing tables (what most tests want of the output).
+quiet_output()
+{
+  cat <<'PRM'
+subsection Output
+  set Directory    = out
+  set Write VTU    = false
+  set Print timing = false
+end
+PRM
+}
+
 # write_long_sweep SCENE FILE: SCENE with 30 load targets (2, 4, .., 60) on
 # a small mesh, without VTU, into FILE: a sweep long enough to interrupt.
 write_long_sweep()
@@ -144,12 +157,8 @@ subsection Contact
   set Values = $(seq -s ', ' 2 2 60)
   set Compare with linear theory = false
 end
-subsection Output
-  set Directory = out
-  set Write VTU = false
-  set Print timing = false
-end
 PRM
+  quiet_output >> "$2"
 }
 
 # start_until_nip2 COMMAND...: runs COMMAND run.prm in the background into

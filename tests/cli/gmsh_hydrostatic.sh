@@ -69,12 +69,8 @@ subsection Load
   set Pressure function = p0
   set p0                = $p0
 end
-subsection Output
-  set Directory    = out
-  set Write VTU    = false
-  set Print timing = false
-end
 PRM
+quiet_output >> hydrostatic.prm
 
 echo "running: rollnip hydrostatic.prm"
 "$rollnip" hydrostatic.prm > rollnip.log 2>&1 ||

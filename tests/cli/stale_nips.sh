@@ -31,12 +31,8 @@ end
 subsection Accuracy
   set Error estimate = false
 end
-subsection Output
-  set Directory    = out
-  set Write VTU    = false
-  set Print timing = false
-end
 PRM
+  quiet_output >> run.prm
   "$rollnip" run.prm > stdout.txt 2> stderr.txt || {
     cat stderr.txt
     fail "the sweep at $1 deg failed"

@@ -39,12 +39,8 @@ end
 subsection Accuracy
   set Error estimate = false
 end
-subsection Output
-  set Directory    = out
-  set Write VTU    = false
-  set Print timing = false
-end
 PRM
+quiet_output >> run.prm
 
 rc=0
 "$rollnip" run.prm > stdout.txt 2> stderr.txt || rc=$?
