@@ -1,0 +1,195 @@
+// The full steady rolling (doc/rolling.md, section 7) against independent
+// truth:
+// - the periodic Prony integration along a circle and its work over a
+//   turn against the exact steady harmonic response of a Maxwell branch,
+//   g i w tau / (1 + i w tau);
+// - at zero speed the whole-circle nip under approach control is the
+//   elastic nip of the symmetric (half-model) contact solver: the same P
+//   and half-width, symmetric edges;
+// - at small V tau / b the rolling resistance is the first-order route's
+//   (first_order_loss() on the same mesh's elastic nip) and near the
+//   closed form g tau V P / R_eff of linear theory;
+// - at every speed the moment of the contact forces about the roll's axis
+//   and the dissipation over V give the same F_r (energy balance);
+// - F_r rises and then falls with speed, with its peak near V tau ~ b;
+//   the pressure skews to the inlet (theta < 0).
+
+#include <rollnip/contact/inverse_contact.h>
+#include <rollnip/rolling/first_order_loss.h>
+#include <rollnip/rolling/periodic_relaxation.h>
+#include <rollnip/rolling/steady_rolling.h>
+
+#include "test_tools.h"
+
+using namespace rollnip;
+
+namespace
+{
+  constexpr double R0 = 60.7, R1 = 47.2, Rbar = 76.2; // mm
+  constexpr double g = 1., tau = 1e-4;                // one-term SLS
+
+  /// The periodic branch for S = cos(theta) against its exact steady
+  /// solution; the largest error over the amplitude.
+  double
+  harmonic_error(const unsigned int n, const double Omega_tau)
+  {
+    std::vector<double>      theta(n);
+    std::vector<PolarTensor> S(n);
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        theta[k] = -numbers::PI + 2 * numbers::PI * (k + 0.3) / n;
+        S[k]     = {{std::cos(theta[k]), 0.5 * std::cos(theta[k]), 0}};
+      }
+    const double Omega = 100.;
+    const auto   b = periodic_branch(theta, S, 0.7, Omega_tau / Omega, Omega);
+    // Q = Re[0.7 i x / (1 + i x) e^(i theta)], x = Omega tau.
+    const double x = Omega_tau, re = 0.7 * x * x / (1 + x * x),
+                 im = 0.7 * x / (1 + x * x);
+    double error    = 0;
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const double exact = re * std::cos(theta[k]) - im * std::sin(theta[k]);
+        error              = std::max(error, std::abs(b.Q[k][0] - exact));
+        error              = std::max(error, std::abs(b.Q[k][1] - 0.5 * exact));
+        error =
+          std::max(error, std::abs(b.c[k] * S[k][0] + b.H[k][0] - b.Q[k][0]));
+      }
+    // The work over a turn with E = S: 1.5 pi im.
+    const double work =
+      branch_work(theta, S, S, b, 0.7, Omega_tau / Omega, Omega);
+    error = std::max(error, std::abs(work / (1.5 * numbers::PI) - im));
+    return error / 0.7;
+  }
+
+  SteadyRollingScene
+  scene(const Parameters::Material &material, const double theta0)
+  {
+    SteadyRollingScene s;
+    s.material               = material;
+    s.viscous                = {{{g}, {tau}}};
+    s.indenter_radius        = Rbar;
+    s.layout.layer_radii     = {R1, R0};
+    s.layout.fine_half_angle = 2.5 * theta0;
+    s.layout.fine_cells      = 100;
+    s.layout.radial_cells    = 16;
+    s.layout.radial_grading  = 0.3;
+    return s;
+  }
+
+  /// The first-order F_r of the circles of the elastic nip at speed V,
+  /// from their half theta >= 0 (the route mirrors it).
+  double
+  first_order(const std::vector<MaterialCircle> &circles, const double V)
+  {
+    std::vector<MaterialCircle> half;
+    for (const auto &c : circles)
+      {
+        MaterialCircle h = c;
+        h.samples.clear();
+        for (const auto &s : c.samples)
+          if (s.theta >= 0)
+            h.samples.push_back(s);
+        half.push_back(h);
+      }
+    Parameters::Rolling r;
+    r.layers = {{{g}, {tau}}};
+    return first_order_loss(half, r, R0, numbers::PI, V).rolling_resistance;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  testing::Checker                 checker;
+  for (const double x : {0.1, 1., 10.})
+    {
+      const double e1 = harmonic_error(400, x), e2 = harmonic_error(800, x);
+      checker.check(e2 < 2e-4 && testing::order(e1, e2) > 1.8,
+                    "periodic branch at Omega tau = " + testing::num(x) +
+                      ": error " + testing::num(e2) + ", order " +
+                      testing::num(testing::order(e1, e2)) + " (2)");
+    }
+
+  // The symmetric solver's elastic nip at theta0 = 3 deg, linear theory.
+  const auto parameters = testing::parameters_from_string(
+    "subsection Geometry\n set Inner radius = 47.2\n set Outer radius = "
+    "60.7\nend\nsubsection Mesh\n set Global refinements = 3\nend\n"
+    "subsection Material\n set Theory = linear\nend\nsubsection Contact\n"
+    " set Mode = nip angle\n set Values = 3\n set Indenter radius = "
+    "76.2\nend\n");
+  RollProblem problem(parameters, MPI_COMM_WORLD);
+  problem.setup();
+  InverseContact      contact(problem, parameters);
+  const double        theta0 = 3 * numbers::PI / 180;
+  const ContactResult nip    = contact.solve(theta0);
+  checker.check(nip.converged, "symmetric nip converged");
+
+  SteadyRolling rolling(scene(parameters.material, theta0));
+  checker.check(rolling.solve_elastic(nip.indentation, 1),
+                "whole-circle elastic nip converged");
+  const auto still = rolling.result();
+  std::cout << "  symmetric solver: u0 = " << nip.indentation
+            << " mm, P = " << nip.nip_load << " N/mm, b = " << nip.half_arc
+            << " mm; whole circle: P = " << still.load << " N/mm, edges "
+            << still.theta_in * 180 / numbers::PI << ", "
+            << still.theta_out * 180 / numbers::PI << " deg" << std::endl;
+  checker.check(std::abs(still.load / nip.nip_load - 1) < 0.01,
+                "zero speed: P within 1 % of the symmetric solver's (" +
+                  testing::num(still.load / nip.nip_load - 1) + ")");
+  checker.check(std::abs(still.theta_in + still.theta_out) < 1e-9 &&
+                  std::abs(still.theta_out / theta0 - 1) < 0.02,
+                "zero speed: symmetric edges within 2 % of theta0 (" +
+                  testing::num(still.theta_out / theta0 - 1) + ")");
+  checker.check(std::abs(still.resistance_moment) < 1e-9 * still.load,
+                "zero speed: no moment (" +
+                  testing::num(still.resistance_moment) + " N/mm)");
+  const auto   circles = rolling.circles();
+  const double b       = R0 * theta0;
+  const double R_eff   = 1. / (1. / R0 + 1. / Rbar);
+
+  std::vector<double> ratios{0.003, 0.01, 0.1, 0.3, 1., 3., 10.};
+  std::vector<double> F_r;
+  std::cout << "  V tau/b, V [m/s], P [N/mm], F_r moment, F_r energy, "
+               "first order [N/mm], edges, peak [deg]"
+            << std::endl;
+  for (const double ratio : ratios)
+    {
+      const double V = ratio * b / tau * 1e-3;
+      checker.check(rolling.solve_speed(V),
+                    "converged at V tau / b = " + testing::num(ratio));
+      const auto   r  = rolling.result();
+      const double fo = first_order(circles, V);
+      std::cout << "  " << ratio << ", " << V << ", " << r.load << ", "
+                << r.resistance_moment << ", " << r.resistance_energy << ", "
+                << fo << ", " << r.theta_in * 180 / numbers::PI << ", "
+                << r.theta_out * 180 / numbers::PI << ", "
+                << r.peak_position * 180 / numbers::PI << "  ("
+                << r.fixed_point_iterations << " fixed-point iterations)"
+                << std::endl;
+      F_r.push_back(r.resistance_energy);
+      checker.check(std::abs(r.resistance_moment / r.resistance_energy - 1) <
+                      0.03,
+                    "energy balance: moment / dissipation = " +
+                      testing::num(r.resistance_moment / r.resistance_energy));
+      if (ratio <= 0.01)
+        {
+          checker.check(std::abs(r.resistance_energy / fo - 1) < 0.03,
+                        "first order route within 3 %: " +
+                          testing::num(r.resistance_energy / fo - 1));
+          const double closed = g * tau * 1e3 * V * r.load / R_eff;
+          checker.check(std::abs(r.resistance_energy / closed - 1) < 0.05,
+                        "g tau V P / R_eff within 5 %: " +
+                          testing::num(r.resistance_energy / closed - 1));
+        }
+      if (ratio >= 0.1)
+        checker.check(r.peak_position < 0 && r.theta_in < -r.theta_out,
+                      "the pressure skews to the inlet");
+    }
+  const auto peak = std::max_element(F_r.begin(), F_r.end()) - F_r.begin();
+  checker.check(peak > 2 && peak + 1 < long(F_r.size()) &&
+                  F_r.back() < 0.7 * F_r[peak],
+                "F_r peaks at V tau / b = " + testing::num(ratios[peak]) +
+                  " and falls beyond");
+  return checker.result();
+}
