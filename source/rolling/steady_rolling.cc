@@ -37,7 +37,7 @@ namespace rollnip
   }
 
   /// DoFs, the bond and surface nodes, the sparsity (the constraints only
-  /// couple the DoFs of one node, which the pattern has) and the points.
+  /// couple the DoFs of one node, which the pattern has) and the samples.
   void
   SteadyRolling::setup()
   {
@@ -70,30 +70,28 @@ namespace rollnip
     rhs.reinit(dof_handler.n_dofs());
     reactions.reinit(dof_handler.n_dofs());
     solution.reinit(dof_handler.n_dofs());
-    make_points();
+    make_samples();
   }
 
-  /// The quadrature points (2 x 2 Gauss, unit x radial and fastest), the
-  /// samples (cell centre along theta, radial Gauss line a) and the
+  /// The samples (cell centre along theta, radial Gauss line a) and the
   /// circles through them: circle 2 j + a of ring j holds the samples of
-  /// radial index a, by sector. A point takes the overstress of the sample
-  /// on its radial line.
+  /// radial index a, by sector. A sample's weight is that of the 2 x 2
+  /// Gauss points on its line (unit x radial and fastest).
   void
-  SteadyRolling::make_points()
+  SteadyRolling::make_samples()
   {
     const unsigned int n = layout.n_sectors();
     FEValues<dim>      fe_values(mapping,
                             fe,
                             FEFields::cell_quadrature(fe),
-                            update_quadrature_points | update_JxW_values);
+                            update_JxW_values);
     FEValues<dim>      at_samples(mapping,
                              fe,
                              circle_quadrature(1).points[1],
                              update_quadrature_points);
-    const unsigned int nq = fe_values.n_quadrature_points;
-    AssertThrow(nq == 4 && at_samples.n_quadrature_points == 2,
+    AssertThrow(fe_values.n_quadrature_points == 4 &&
+                  at_samples.n_quadrature_points == 2,
                 ExcInternalError());
-    points.resize(triangulation.n_active_cells() * nq);
     samples.resize(triangulation.n_active_cells() * 2);
     circle_samples.assign(2 * layout.n_rings(), std::vector<unsigned int>(n));
     circle_weight.assign(circle_samples.size(), 0.);
@@ -113,21 +111,14 @@ namespace rollnip
         at_samples.reinit(cell);
         for (unsigned int a = 0; a < 2; ++a)
           {
-            Sample    &s                 = samples[2 * c + a];
-            const auto X                 = at_samples.quadrature_point(a);
-            s.theta                      = std::atan2(X[1], X[0]);
-            s.radius                     = X.norm();
-            s.layer                      = cell->material_id();
+            Sample    &s = samples[2 * c + a];
+            const auto X = at_samples.quadrature_point(a);
+            s.theta      = std::atan2(X[1], X[0]);
+            s.radius     = X.norm();
+            s.layer      = cell->material_id();
+            s.JxW        = fe_values.JxW(a) + fe_values.JxW(a + 2);
             circle_samples[2 * j + a][i] = 2 * c + a;
-          }
-        for (unsigned int q = 0; q < nq; ++q)
-          {
-            PointState &p = points[c * nq + q];
-            const auto &X = fe_values.quadrature_point(q);
-            p.theta       = std::atan2(X[1], X[0]);
-            p.JxW         = fe_values.JxW(q);
-            p.sample      = 2 * c + q % 2;
-            circle_weight[2 * j + q % 2] += p.JxW / (2. * numbers::PI);
+            circle_weight[2 * j + a] += s.JxW / (2. * numbers::PI);
           }
       }
   }

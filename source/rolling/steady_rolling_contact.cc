@@ -89,34 +89,45 @@ namespace rollnip
     return changed;
   }
 
-  /// Newton with the active set updated every step; converged when the
-  /// set stays and the update is below 1e-10 R0.
-  bool
-  SteadyRolling::newton(const unsigned int max_iterations)
+  /// One Newton step with the active set updated first; returns the
+  /// largest entry of the update, @p changed whether the set changed.
+  double
+  SteadyRolling::newton_step(bool &changed)
   {
-    dealii::Vector<double> du(solution.size());
-    const double           R0 = layout.radii().back();
-    for (unsigned int it = 0; it < max_iterations; ++it)
+    make_constraints();
+    assemble();
+    changed = update_active_set();
+    if (changed)
       {
         make_constraints();
         assemble();
-        const bool changed = update_active_set();
-        if (changed)
-          {
-            make_constraints();
-            assemble();
-          }
-        SparseDirectUMFPACK direct;
-        direct.initialize(matrix);
-        direct.vmult(du, rhs);
-        constraints.distribute(du);
-        solution += du;
-        ++newton_count;
-        if (!std::isfinite(du.l2_norm()))
+      }
+    dealii::Vector<double> du(solution.size());
+    SparseDirectUMFPACK    direct;
+    direct.initialize(matrix);
+    direct.vmult(du, rhs);
+    constraints.distribute(du);
+    solution += du;
+    ++newton_count;
+    const double size = du.linfty_norm();
+    return std::isfinite(size) ? size : std::numeric_limits<double>::max();
+  }
+
+  /// Newton steps until the set stays and the update is below 1e-10 R0;
+  /// then the reactions of the converged state.
+  bool
+  SteadyRolling::newton(const unsigned int max_iterations)
+  {
+    const double R0 = layout.radii().back();
+    for (unsigned int it = 0; it < max_iterations; ++it)
+      {
+        bool         changed = false;
+        const double size    = newton_step(changed);
+        if (size == std::numeric_limits<double>::max())
           return false;
-        if (!changed && du.linfty_norm() < 1e-10 * R0)
+        if (!changed && size < 1e-10 * R0)
           {
-            assemble(); // the reactions of the converged state
+            assemble();
             return true;
           }
       }

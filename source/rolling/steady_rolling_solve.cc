@@ -9,10 +9,10 @@ namespace rollnip
   SteadyRolling::solve_elastic(const double target, const unsigned int steps)
   {
     speed = 0;
-    for (auto &p : points)
+    for (auto &s : samples)
       {
-        p.c = 0;
-        p.H = 0;
+        s.c           = 0;
+        s.H_cartesian = 0;
       }
     dissipated         = 0;
     const double start = u0;
@@ -28,107 +28,122 @@ namespace rollnip
   }
 
   /// The fixed point of the overstress's history and the equilibrium:
-  /// the history from the current state, then Newton with it frozen,
-  /// until the state changes by less than 1e-8 u0. The history is
-  /// under-relaxed (halving the step, down to 1/16) while the change
-  /// grows.
+  /// the history from the current state, then one Newton step with it
+  /// frozen, until the active set stays and the step is below 1e-8 u0;
+  /// then Newton to convergence with the history of that state. The
+  /// history is under-relaxed (halving, down to 1/16) while the steps
+  /// grow.
   bool
   SteadyRolling::solve_speed(const double V)
   {
     speed             = V;
     converged         = false;
     fixed_point_count = 0;
-    double omega = 1, last_change = std::numeric_limits<double>::max();
-    std::vector<Tensor<2, dim>> H_old(points.size());
-    for (unsigned int it = 0; it < 200; ++it)
+    double omega = 1, last = std::numeric_limits<double>::max();
+    std::vector<Tensor<2, dim>> H_old(samples.size());
+    for (unsigned int it = 0; it < 300; ++it)
       {
-        for (unsigned int p = 0; p < points.size(); ++p)
-          H_old[p] = points[p].H;
+        for (unsigned int p = 0; p < samples.size(); ++p)
+          H_old[p] = samples[p].H_cartesian;
         update_history();
         if (omega < 1)
-          for (unsigned int p = 0; p < points.size(); ++p)
-            points[p].H = omega * points[p].H + (1 - omega) * H_old[p];
-        const dealii::Vector<double> previous = solution;
-        if (!newton(50))
-          return false;
+          for (unsigned int p = 0; p < samples.size(); ++p)
+            samples[p].H_cartesian =
+              omega * samples[p].H_cartesian + (1 - omega) * H_old[p];
+        bool         changed = false;
+        const double step    = newton_step(changed);
         ++fixed_point_count;
-        dealii::Vector<double> difference = solution;
-        difference -= previous;
-        const double change = difference.linfty_norm();
-        if (change < 1e-8 * u0)
+        if (step == std::numeric_limits<double>::max())
+          return false;
+        if (!changed && step < 1e-8 * u0)
           {
+            update_history();
+            if (!newton(20))
+              return false;
             update_history(); // the dissipation of the converged state
             converged = true;
             return true;
           }
-        if (change > last_change && omega > 1. / 16)
+        if (step > last && omega > 1. / 16)
           omega *= 0.5;
-        last_change = change;
+        last = step;
       }
     return false;
+  }
+
+  /// The surface nodes by angle with their contact forces: lambda the
+  /// normal force [N/mm], p = lambda over the deformed tributary length.
+  std::vector<SteadyRolling::NodeForce>
+  SteadyRolling::contact_forces() const
+  {
+    std::vector<NodeForce> nodes;
+    const bool linear = scene.material.theory == Parameters::Theory::linear;
+    for (const auto &[x_dof, node] : surface)
+      {
+        NodeForce f;
+        f.theta  = std::atan2(node.X[1], node.X[0]);
+        f.normal = gap_normal(node);
+        f.x      = deformed(node);
+        // The moment balance of the discrete equilibrium holds about the
+        // reference positions in linear theory, the deformed in finite
+        // strain.
+        f.arm    = linear ? node.X : f.x;
+        f.active = active.count(x_dof) > 0;
+        if (f.active)
+          f.lambda = f.normal * Tensor<1, dim>({reactions(node.dofs[0]),
+                                                reactions(node.dofs[1])});
+        nodes.push_back(f);
+      }
+    std::sort(nodes.begin(), nodes.end(), [](const auto &a, const auto &b) {
+      return a.theta < b.theta;
+    });
+    const unsigned int n = nodes.size();
+    for (unsigned int i = 0; i < n; ++i)
+      nodes[i].p = nodes[i].lambda /
+                   (0.5 * (nodes[i].x.distance(nodes[(i + n - 1) % n].x) +
+                           nodes[i].x.distance(nodes[(i + 1) % n].x)));
+    return nodes;
   }
 
   SteadyRollingResult
   SteadyRolling::result() const
   {
     SteadyRollingResult r;
-    const double        R0   = layout.radii().back();
-    r.converged              = converged;
-    r.speed                  = speed;
-    r.approach               = u0;
-    r.power                  = dissipated;
-    r.resistance_energy      = speed > 0 ? dissipated / (1e3 * speed) : 0.;
-    r.fixed_point_iterations = fixed_point_count;
-    r.newton_steps           = newton_count;
-    // The surface nodes by angle.
-    std::vector<const SurfaceNode *> nodes;
-    for (const auto &entry : surface)
-      nodes.push_back(&entry.second);
-    const auto angle = [](const SurfaceNode *n) {
-      return std::atan2(n->X[1], n->X[0]);
-    };
-    std::sort(nodes.begin(), nodes.end(), [&](auto a, auto b) {
-      return angle(a) < angle(b);
-    });
+    r.converged               = converged;
+    r.speed                   = speed;
+    r.approach                = u0;
+    r.power                   = dissipated;
+    r.resistance_energy       = speed > 0 ? dissipated / (1e3 * speed) : 0.;
+    r.fixed_point_iterations  = fixed_point_count;
+    r.newton_steps            = newton_count;
+    const auto         nodes  = contact_forces();
     const unsigned int n      = nodes.size();
-    double             torque = 0, first = 0, last = 0, total = 0, moment = 0;
+    double             torque = 0, total = 0, moment = 0;
     bool               any = false;
     for (unsigned int i = 0; i < n; ++i)
       {
-        const SurfaceNode &node = *nodes[i];
-        if (!active.count(node.dofs[0]))
+        const NodeForce &f = nodes[i];
+        if (!f.active)
           continue;
-        const Tensor<1, dim> nrm = gap_normal(node);
-        const double         lambda =
-          nrm[0] * reactions(node.dofs[0]) + nrm[1] * reactions(node.dofs[1]);
-        const Point<dim> x = deformed(node);
-        r.load -= lambda * nrm[0];
-        total += lambda;
-        moment += lambda * angle(&node);
-        torque += lambda * (x[0] * nrm[1] - x[1] * nrm[0]);
-        const Point<dim> before = deformed(*nodes[(i + n - 1) % n]);
-        const Point<dim> after  = deformed(*nodes[(i + 1) % n]);
-        const double     p =
-          lambda / (0.5 * (x.distance(before) + x.distance(after)));
-        r.pressure.emplace_back(angle(&node), p);
-        if (p > r.peak_pressure)
+        r.load -= f.lambda * f.normal[0];
+        total += f.lambda;
+        moment += f.lambda * f.theta;
+        torque += f.lambda * (f.arm[0] * f.normal[1] - f.arm[1] * f.normal[0]);
+        r.pressure.emplace_back(f.theta, f.p);
+        if (f.p > r.peak_pressure)
           {
-            r.peak_pressure = p;
-            r.peak_position = angle(&node);
+            r.peak_pressure = f.p;
+            r.peak_position = f.theta;
           }
-        // The edge: halfway to the neighbouring free node.
-        const double half = 0.5 * (angle(nodes[(i + 1) % n]) - angle(&node));
-        const double back =
-          0.5 * (angle(&node) - angle(nodes[(i + n - 1) % n]));
+        // The edges: halfway to the neighbouring free node.
         if (!any)
-          first = angle(&node) - back;
-        last = angle(&node) + half;
-        any  = true;
+          r.theta_in = 0.5 * (f.theta + nodes[(i + n - 1) % n].theta);
+        r.theta_out = 0.5 * (f.theta + nodes[(i + 1) % n].theta);
+        any         = true;
       }
+    const double R0     = layout.radii().back();
     r.pressure_centre   = total > 0 ? moment / total : 0.;
-    r.theta_in          = first;
-    r.theta_out         = last;
-    r.half_width        = 0.5 * R0 * (last - first);
+    r.half_width        = 0.5 * R0 * (r.theta_out - r.theta_in);
     r.resistance_moment = -torque / R0;
     return r;
   }

@@ -116,20 +116,17 @@ namespace rollnip
     return power;
   }
 
-  /// The points take their sample's overstress, H turned to Cartesian
-  /// components at the point's own angle.
+  /// The samples' H turned to Cartesian components.
   double
   SteadyRolling::update_history()
   {
     dissipated    = circle_histories();
     double change = 0;
-    for (auto &point : points)
+    for (auto &s : samples)
       {
-        const Sample        &s = samples[point.sample];
-        const Tensor<2, dim> H = to_cartesian(s.H, point.theta);
-        change                 = std::max(change, (H - point.H).norm());
-        point.H                = H;
-        point.c                = s.c;
+        const Tensor<2, dim> H = to_cartesian(s.H, s.theta);
+        change                 = std::max(change, (H - s.H_cartesian).norm());
+        s.H_cartesian          = H;
       }
     return change;
   }

@@ -108,25 +108,19 @@ namespace rollnip
     }
 
   private:
-    /// One quadrature point: its angle, its sample and the frozen
-    /// overstress S_v = c S_iso(F) + H (Cartesian, reference frame).
-    struct PointState
-    {
-      double         theta = 0, JxW = 0;
-      unsigned int   sample = 0;
-      double         c      = 0;
-      Tensor<2, dim> H;
-    };
-    /// A point where the circles sample the strain history: in every cell
-    /// at its centre along the circle (where the Q1 gradient is most
-    /// accurate) on each radial Gauss line; c and H (polar) of the
-    /// overstress there.
+    /// A point where the circles sample the strain history and where the
+    /// overstress acts: in every cell at its centre along the circle
+    /// (where the Q1 gradient is most accurate) on each radial Gauss line,
+    /// with the weight of that line's two Gauss points. The overstress
+    /// there, S_v = c S_iso(F) + H, with H in polar and Cartesian
+    /// (reference frame) components.
     struct Sample
     {
-      double       theta = 0, radius = 0;
-      unsigned int layer = 0;
-      double       c     = 0;
-      PolarTensor  H{{0, 0, 0}};
+      double         theta = 0, radius = 0, JxW = 0;
+      unsigned int   layer = 0;
+      double         c     = 0;
+      PolarTensor    H{{0, 0, 0}};
+      Tensor<2, dim> H_cartesian;
     };
     /// A surface node: its DoFs (x, y) and reference position.
     struct SurfaceNode
@@ -135,10 +129,21 @@ namespace rollnip
       Point<dim>                               X;
     };
 
+    /// A surface node's contact force and place.
+    struct NodeForce
+    {
+      double         theta = 0, lambda = 0, p = 0;
+      bool           active = false;
+      Tensor<1, dim> normal;
+      Point<dim>     x, arm;
+    };
+    std::vector<NodeForce>
+    contact_forces() const;
+
     void
     setup();
     void
-    make_points();
+    make_samples();
     void
     assemble();
     void
@@ -147,9 +152,16 @@ namespace rollnip
              FullMatrix<double>                          &K,
              dealii::Vector<double>                      &R) const;
     void
+    add_overstress(const DoFHandler<dim>::active_cell_iterator &cell,
+                   FEValues<dim>                               &at_samples,
+                   FullMatrix<double>                          &K,
+                   dealii::Vector<double>                      &R) const;
+    void
     make_constraints();
     bool
     update_active_set();
+    double
+    newton_step(bool &changed);
     bool
     newton(const unsigned int max_iterations);
     /// Recomputes every point's c and H from the current state (and the
@@ -191,8 +203,7 @@ namespace rollnip
     SparseMatrix<double>   matrix;
     dealii::Vector<double> rhs, reactions, solution;
 
-    std::vector<PointState> points;
-    std::vector<Sample>     samples;
+    std::vector<Sample> samples;
     /// The samples of each circle, by increasing angle.
     std::vector<std::vector<unsigned int>> circle_samples;
     std::vector<double>                    circle_weight;
