@@ -67,13 +67,13 @@ namespace rollnip
    * section 7) on the whole circle, in the frame of the nip: a material
    * point at reference radius r travels along its circle at Omega = V / R0
    * towards increasing theta, so every field is a function of the
-   * reference position and the Prony overstress at a quadrature point
-   * follows from its circle's upstream history (periodic_branch()). The
-   * equilibrium of the long-term law plus that overstress, with
-   * frictionless contact against the rigid mating roll at a prescribed
-   * approach u0 (an active set on the surface nodes' gaps), is solved by
-   * Newton with the overstress's history frozen, and history and
-   * equilibrium are iterated to a fixed point. Serial (one process).
+   * reference position and the Prony overstress at a sample point (cell
+   * centre along the circle, radial Gauss line) follows from its circle's
+   * upstream history (periodic_branch()). The equilibrium of the
+   * long-term law plus that overstress, with frictionless contact against
+   * the rigid mating roll at a prescribed approach u0 (an active set on
+   * the surface nodes' gaps), and the history are iterated to a fixed
+   * point, one Newton step per history update. Serial (one process).
    */
   class SteadyRolling
   {
