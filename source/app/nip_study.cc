@@ -21,6 +21,7 @@
 #include <rollnip/output/units.h>
 #include <rollnip/rolling/rolling_evaluation.h>
 #include <rollnip/rolling/rolling_parameters.h>
+#include <rollnip/rolling/steady_rolling_sweep.h>
 #include <rollnip/run_errors.h>
 #include <rollnip/scene/scene_builder.h>
 
@@ -650,6 +651,16 @@ namespace rollnip
                                      dir,
                                      parameters.output.write_csv,
                                      parameters.output.write_vtu);
+      if (rolling.full_steady && Utilities::MPI::this_mpi_process(comm) == 0)
+        {
+          const auto rows = steady_rolling_sweep(
+            steady_rolling_scene(parameters, rolling, row.nonlinear.theta0),
+            rolling,
+            row.nonlinear.indentation,
+            &std::cout);
+          if (parameters.output.write_csv)
+            write_steady_rolling(rows, dir);
+        }
     }
 
     /// Appends @p lines to @p dir/summary.txt (rank 0), which

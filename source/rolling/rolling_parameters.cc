@@ -126,6 +126,33 @@ namespace rollnip
                            "rolling resistance and temperatures against "
                            "speed (rolling_speeds.csv); empty: none");
         declare_documented(prm,
+                           "Full steady rolling",
+                           "false",
+                           Patterns::Bool(),
+                           "true: also the full steady rolling of each nip "
+                           "at its indentation, by continuation in speed "
+                           "from the elastic nip, with the Prony terms of "
+                           "the cover (rolling_full.csv, doc/rolling.md)");
+        declare_documented(prm,
+                           "Full rolling speeds",
+                           "",
+                           Patterns::List(Patterns::Double(0.), 0),
+                           "Speeds of the full steady rolling in Speed "
+                           "unit, ascending; empty: Surface speed and Speed "
+                           "table");
+        declare_documented(prm,
+                           "Full rolling nip cells",
+                           "100",
+                           Patterns::Integer(4),
+                           "Cells of the full steady rolling's mesh across "
+                           "2.5 times the nip's half-angle on each side of "
+                           "the line of centres");
+        declare_documented(prm,
+                           "Full rolling radial cells",
+                           "16",
+                           Patterns::Integer(1),
+                           "Radial cells of the full steady rolling's mesh");
+        declare_documented(prm,
                            "Viscoelastic model",
                            "loss tangent",
                            Patterns::Selection(
@@ -292,6 +319,21 @@ namespace rollnip
       speeds = {speed};
       for (const double v : numbers_of(prm.get("Speed table"), "Speed table"))
         speeds.push_back(v * factor);
+      full_steady = prm.get_bool("Full steady rolling");
+      full_speeds.clear();
+      for (const double v :
+           numbers_of(prm.get("Full rolling speeds"), "Full rolling speeds"))
+        full_speeds.push_back(v * factor);
+      if (full_speeds.empty())
+        {
+          full_speeds = speeds;
+          std::sort(full_speeds.begin(), full_speeds.end());
+        }
+      AssertThrow(std::is_sorted(full_speeds.begin(), full_speeds.end()),
+                  ExcMessage("Rolling/Full rolling speeds: the speeds must "
+                             "be ascending (a continuation in speed)"));
+      full_nip_cells      = prm.get_integer("Full rolling nip cells");
+      full_radial_cells   = prm.get_integer("Full rolling radial cells");
       const std::string m = prm.get("Viscoelastic model");
       model               = m == "prony"          ? ViscoelasticModel::prony
                             : m == "kelvin-voigt" ? ViscoelasticModel::kelvin_voigt
@@ -333,6 +375,11 @@ namespace rollnip
                   ExcMessage("Rolling/Heat transfer coefficient must be "
                              "positive with Core thermal condition = "
                              "insulated (the heat would have no way out)"));
+      AssertThrow(!full_steady || model == ViscoelasticModel::prony,
+                  ExcMessage("Rolling/Full steady rolling needs "
+                             "Rolling/Viscoelastic model = prony (a "
+                             "Kelvin-Voigt dashpot or a loss tangent is not "
+                             "a Maxwell branch)"));
     }
 
     void

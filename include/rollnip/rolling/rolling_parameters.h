@@ -70,6 +70,12 @@ namespace rollnip
       CoreThermalCondition core_condition =
         CoreThermalCondition::fixed_temperature;
 
+      /// The full steady rolling of each nip (doc/rolling.md, section 7):
+      /// on, its speeds [m/s] (ascending; empty: speeds) and its mesh.
+      bool                full_steady = false;
+      std::vector<double> full_speeds;
+      unsigned int        full_nip_cells = 100, full_radial_cells = 16;
+
       static void
       declare(ParameterHandler &prm);
       /// Reads the subsection; @p n_layers is the cover's number of layers
