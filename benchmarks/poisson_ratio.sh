@@ -18,8 +18,11 @@ nus=${NUS:-0.5 0.49 0.45 0.4 0.3}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-# value FILE KEY: the value of 'KEY = value' in FILE.
-value() { awk -F' = ' -v k="$2" '$1 == k { print $2 }' "$1"; }
+# column CSV NAME: the first data row's value in the column NAME.
+column() {
+  awk -F, -v k="$2" 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == k) c = i }
+                     NR == 2 { print $c }' "$1"
+}
 
 # run NAME MODE VALUE NU: one nip; prints nu K P u0 b peak
 run() {
@@ -39,13 +42,13 @@ subsection Output
 end
 EOF
   "$rollnip" "$tmp/$1.prm" >/dev/null
-  local c
-  c=$(find "$tmp/$1" -name contact.txt | head -1)
   local K
   K=$(awk -v nu="$4" 'BEGIN { if (nu >= 0.5) print "inf";
         else printf "%.4g", 2 * (1 + nu) / (3 * (1 - 2 * nu)) }')
-  echo "$4 $K $(value "$c" nip_load_P_N_per_mm) $(value "$c" indentation_u0_mm)" \
-       "$(value "$c" half_chord_mm) $(value "$c" peak_pressure_MPa)"
+  echo "$4 $K $(column "$tmp/$1/nip_characteristic.csv" P_N_per_mm)" \
+       "$(column "$tmp/$1/nip_characteristic.csv" u0_mm)" \
+       "$(column "$tmp/$1/nip_characteristic.csv" half_chord_mm)" \
+       "$(column "$tmp/$1/nip_characteristic.csv" peak_pressure_MPa)"
 }
 
 table() {
