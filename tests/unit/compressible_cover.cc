@@ -12,7 +12,8 @@
 //     it, with a difference first order in the load (C1 = 0, where the
 //     discrete linearisations coincide: small_load_limit.cc);
 // (c) run 30 in indentation control: P(u0) at nu -> 0.5 tends to the
-//     incompressible P, the difference linear in 1 - 2 nu.
+//     incompressible P, the difference linear in 1 - 2 nu (the same
+//     mesh, element and contact method: only the constraint differs).
 
 #include <rollnip/contact/inverse_contact.h>
 #include <rollnip/contact/nip_control.h>
@@ -129,7 +130,7 @@ namespace
       tube(2, "free") + material(0, 0.5, nu) + inner_pressure(1) +
       "subsection Material\n set Theory = linear\nend\n"));
     std::vector<double> differences;
-    for (const double p : {1e-2, 1e-3})
+    for (const double p : {1e-3, 1e-4})
       {
         const auto nonlinear = radius_changes(testing::parameters_from_string(
           tube(2, "free") + material(0, 0.5, nu) + inner_pressure(p) +
@@ -142,9 +143,9 @@ namespace
     check.check(differences[1] < 1e-3 && ratio > 8 && ratio < 12,
                 "nu = 0.45, finite strain / p against linear theory: relative "
                 "difference " +
-                  testing::num(differences[0]) + " at p = 0.01, " +
+                  testing::num(differences[0]) + " at p = 0.001, " +
                   testing::num(differences[1]) +
-                  " at p = 0.001 MPa (first order: ratio " +
+                  " at p = 0.0001 MPa (first order: ratio " +
                   testing::num(ratio) + ")");
   }
 
@@ -174,7 +175,8 @@ namespace
     const double d4   = run30_load(0.4999) / P - 1;
     const double d3   = run30_load(0.499) / P - 1;
     const double rate = d3 / d4;
-    check.check(std::abs(d4) < 1e-4 && rate > 8 && rate < 12,
+    // The difference is about 3.2 (1 - 2 nu): 6.4e-4 at nu = 0.4999.
+    check.check(std::abs(d4) < 1e-3 && rate > 9 && rate < 11,
                 "run 30, u0 = 1 mm: P = " + testing::num(P) +
                   " N/mm incompressible; nu = 0.4999: relative difference " +
                   testing::num(d4) + ", nu = 0.499: " + testing::num(d3) +

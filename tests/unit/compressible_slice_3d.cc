@@ -84,13 +84,19 @@ main(int argc, char **argv)
                 << " %), b = " << testing::num(nip.half_chord) << " mm"
                 << std::endl;
     }
-  check.check(std::abs(error[1]) < 1.5e-3,
-              "nu = 0.45, level 2 slice P within 0.15 % of 2D: " +
+  // Unlike the incompressible slice (0.5 % and 0.15 % off at levels 1
+  // and 2, slice_3d.cc), the compressible one is within 0.03 % of 2D
+  // already at level 1 and changes by 4e-5 to level 2: the difference is
+  // at the level of the 2D reference's own error, so no falling error is
+  // asserted, only agreement and a converged slice.
+  check.check(std::abs(error[0]) < 1e-3 && std::abs(error[1]) < 1e-3,
+              "nu = 0.45, slice P within 0.1 % of 2D at levels 1 and 2: " +
+                testing::num(100 * error[0]) + " %, " +
                 testing::num(100 * error[1]) + " %");
-  check.check(std::abs(error[1]) < 0.8 * std::abs(error[0]),
-              "the error falls with refinement: " +
-                testing::num(100 * error[0]) + " % -> " +
-                testing::num(100 * error[1]) + " %");
+  check.check(std::abs((1 + error[1]) / (1 + error[0]) - 1) < 2e-4,
+              "the slice is converged: level 1 to 2 changes P by " +
+                testing::num(100 * ((1 + error[1]) / (1 + error[0]) - 1)) +
+                " %");
   // slice_3d.cc's incompressible 2D P(1 mm) = 6.3289393 N/mm.
   check.check(P_slice < 6.3289393 && P_2d < 6.3289393,
               "the compressible cover needs less load: P = " +
