@@ -316,6 +316,22 @@ namespace rollnip
                          "stepping; linear: small strain with shear modulus "
                          "G = 2 (C1 + C2), whole load in one step on the "
                          "undeformed surface");
+      declare_documented(prm,
+                         "Poisson ratio",
+                         "0.5",
+                         Patterns::List(Patterns::Double(), 1),
+                         "Poisson's ratio nu of the cover in [0, 0.5], one "
+                         "value for all layers or one per layer; 0.5: exactly "
+                         "incompressible (solid rubber); below 0.5 a "
+                         "compressible cover (microcellular, polyurethane) "
+                         "with bulk modulus K = 2 G (1 + nu) / (3 (1 - 2 nu))");
+      declare_documented(prm,
+                         "Bulk modulus",
+                         "",
+                         Patterns::List(Patterns::Double(), 0),
+                         "Bulk modulus K of the cover [MPa], one value for all "
+                         "layers or one per layer, instead of Poisson ratio; "
+                         "empty: from Poisson ratio");
       EngineeringInputs::declare_material(prm);
       LayerOrder::declare(prm);
       prm.leave_subsection();
@@ -331,9 +347,11 @@ namespace rollnip
         return values;
       };
       prm.enter_subsection("Material");
-      layer_C1          = numbers("C1");
-      layer_C2          = numbers("C2");
-      layer_thicknesses = numbers("Layer thicknesses");
+      layer_C1            = numbers("C1");
+      layer_C2            = numbers("C2");
+      layer_thicknesses   = numbers("Layer thicknesses");
+      layer_poisson_ratio = numbers("Poisson ratio");
+      layer_bulk_modulus  = numbers("Bulk modulus");
       theory =
         prm.get("Theory") == "linear" ? Theory::linear : Theory::nonlinear;
       EngineeringInputs::parse_material(prm, *this);

@@ -99,6 +99,12 @@ namespace rollnip
       std::vector<double> layer_C1, layer_C2;
       /// Thickness of every layer [mm]; empty: one layer, the whole cover.
       std::vector<double> layer_thicknesses;
+      /// Poisson's ratio of every layer (one value: all layers); 0.5, the
+      /// default: exactly incompressible (material/compressibility.h).
+      std::vector<double> layer_poisson_ratio;
+      /// Bulk modulus of every layer [MPa] (one value: all layers); empty:
+      /// from the Poisson ratio.
+      std::vector<double> layer_bulk_modulus;
       Theory              theory;
 
       unsigned int

@@ -93,8 +93,9 @@ namespace rollnip
 
     /**
      * The volume part of the residual of the mixed problem (doc/intro.md,
-     * eq. 3.1), R_u = int P(F, q) : Grad v dV, R_q = int w (J - 1) dV, and
-     * of its tangent, on one cell.
+     * eq. 3.1), R_u = int P(F, q) : Grad v dV, R_q = int w c(F, q) dV with
+     * c = (J - 1) - q/kappa (1/kappa = 0: incompressible), and of its
+     * tangent, on one cell.
      */
     void
     add_cell_terms(const MaterialLaw<dim>              &material,
@@ -106,6 +107,7 @@ namespace rollnip
       using FEFields::displacement;
       const auto          &pressure_unknown = FEFields::pressure;
       const FEValues<dim> &fe_values        = scratch.fe_values;
+      const double         compliance       = material.pressure_compliance();
       const unsigned int   n_dofs           = copy.dof_indices.size();
       const Tensor<2, dim> I                = unit_symmetric_tensor<dim>();
       auto                &grad_phi = scratch.grad_phi, &dP = scratch.dP;
@@ -120,7 +122,7 @@ namespace rollnip
           const double         p     = scratch.q_values[q];
           const Tensor<2, dim> P     = material.piola(F, p);
           const Tensor<2, dim> dP_dq = material.pressure_direction(F);
-          const double         g     = material.constraint(F);
+          const double         g     = material.constraint(F) - compliance * p;
           const double         JxW   = fe_values.JxW(q);
           for (unsigned int k = 0; k < n_dofs; ++k)
             {
@@ -146,7 +148,22 @@ namespace rollnip
                    psi[i] * scalar_product(dP_dq, grad_phi[j])) *
                   JxW;
             }
+          if (compliance != 0)
+            for (unsigned int i = 0; i < n_dofs; ++i)
+              for (unsigned int j = 0; j < n_dofs; ++j)
+                copy.cell_matrix(i, j) -= compliance * psi[i] * psi[j] * JxW;
         }
+    }
+
+    /// The scale s of the pressure block M_p / s of the preconditioner:
+    /// the Schur complement B A^-1 B^T + M_p/kappa is about M_p (1/G +
+    /// 1/kappa), so s = G when incompressible (kept exactly so).
+    double
+    schur_scale(const MaterialLaw<dim> &material)
+    {
+      const double G = material.shear_modulus();
+      const double c = material.pressure_compliance();
+      return c == 0 ? G : 1. / (1. / G + c);
     }
 
     /**
@@ -197,7 +214,8 @@ namespace rollnip
     }
 
     /// The cell matrix of [A 0; 0 M_p/G]: the displacement block of the
-    /// tangent and the lumped pressure mass over the cell's G.
+    /// tangent and the lumped pressure mass over the cell's G (over
+    /// schur_scale() for a compressible law).
     void
     make_preconditioner_block(const FiniteElement<dim> &fe,
                               const double              G,
@@ -250,7 +268,7 @@ namespace rollnip
                      copy);
       cell->get_dof_indices(copy.dof_indices);
       if (preconditioner)
-        make_preconditioner_block(*element, material.shear_modulus(), copy);
+        make_preconditioner_block(*element, schur_scale(material), copy);
     };
 
     double min_J  = std::numeric_limits<double>::max();
@@ -398,7 +416,7 @@ namespace rollnip
             block.push_back(dof_indices[a]);
           FullMatrix<double> inverse(n_p, n_p);
           inverse.invert(mass);
-          inverse *= material_table[cell->material_id()].shear_modulus();
+          inverse *= schur_scale(material_table[cell->material_id()]);
           blocks.push_back(std::move(block));
           inverses.push_back(std::move(inverse));
         }

@@ -21,7 +21,8 @@ namespace rollnip
         "",
         Patterns::Selection("|core first|top first"),
         "The order of the per-layer lists of a layered cover (C1, C2, "
-        "Hardness, Layer thicknesses): core first (layer 1 on the core), or "
+        "Hardness, Layer thicknesses, Poisson ratio, Bulk modulus): core "
+        "first (layer 1 on the core), or "
         "top first (layer 1 the surface; the lists are reversed when "
         "read); empty: core first, with a warning for a layered cover");
     }
@@ -45,6 +46,11 @@ namespace rollnip
           std::reverse(material.layer_C2.begin(), material.layer_C2.end());
           std::reverse(material.layer_thicknesses.begin(),
                        material.layer_thicknesses.end());
+          // One value stands for all layers; a list is per layer.
+          std::reverse(material.layer_poisson_ratio.begin(),
+                       material.layer_poisson_ratio.end());
+          std::reverse(material.layer_bulk_modulus.begin(),
+                       material.layer_bulk_modulus.end());
           return;
         }
       if (!order.empty() ||

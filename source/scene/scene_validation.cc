@@ -5,6 +5,7 @@
 #include <rollnip/cost_estimate.h>
 #include <rollnip/engineering_inputs.h>
 #include <rollnip/geometry/roll_mesh.h>
+#include <rollnip/material/compressibility.h>
 #include <rollnip/parameter_entries.h>
 #include <rollnip/scene/scene_validation.h>
 
@@ -231,6 +232,7 @@ namespace rollnip
                            "Layer thicknesses is empty: give the thickness "
                            "of every layer [mm]"));
     validate_constants(m, M);
+    Compressibility::validate(m, M);
     const double h   = g.outer_radius - g.inner_radius;
     double       sum = 0;
     for (const double t : m.layer_thicknesses)

@@ -10,6 +10,7 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <rollnip/material/law_factory.h>
 #include <rollnip/three_d/slice_body.h>
 
 #include <cmath>
@@ -37,8 +38,8 @@ namespace rollnip
         , triangulation(communicator)
         , fe(FE_Q<dim>(1), dim, FE_DGP<dim>(0), 1)
         , dof_handler(triangulation)
-        , law(parameters.material.layer_C1.back(),
-              parameters.material.layer_C2.back())
+        , law(make_layer_law<dim>(parameters.material,
+                                  parameters.material.n_layers() - 1))
         , indenter(make_counter_surface(parameters.geometry.outer_radius,
                                         parameters.contact.indenter_radius))
         , core(three_d.core_deflection)
@@ -57,7 +58,7 @@ namespace rollnip
                       three_d.axial_grading);
       // c of the active-set rule: a nodal force per mm of gap of the order
       // of the cover's stiffness; any c > 0 gives the same converged set.
-      active_set_scale = law.shear_modulus() * three_d.slice_thickness;
+      active_set_scale = law->shear_modulus() * three_d.slice_thickness;
       setup_system();
       collect_surface_nodes();
       collect_bonded_nodes();
@@ -150,6 +151,8 @@ namespace rollnip
       std::vector<Tensor<2, dim>>          grad_phi(n), dP(n);
       std::vector<double>                  psi(n);
       double                               constraint_error = 0;
+      // c(F, q) = J - 1 - q/kappa: the pressure block -M_p/kappa.
+      const double compliance = law->pressure_compliance();
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
@@ -163,16 +166,16 @@ namespace rollnip
               {
                 const Tensor<2, dim> F =
                   unit_symmetric_tensor<dim>() + grad_u[k];
-                const Tensor<2, dim> P   = law.piola(F, q[k]);
-                const Tensor<2, dim> cof = law.pressure_direction(F);
-                const double         g   = law.constraint(F);
-                const double         dx  = fv.JxW(k);
+                const Tensor<2, dim> P   = law->piola(F, q[k]);
+                const Tensor<2, dim> cof = law->pressure_direction(F);
+                const double         g = law->constraint(F) - compliance * q[k];
+                const double         dx = fv.JxW(k);
                 cell_constraint += g * dx;
                 for (unsigned int i = 0; i < n; ++i)
                   {
                     grad_phi[i] = fv[u_ex].gradient(i, k);
                     psi[i]      = fv[q_ex].value(i, k);
-                    dP[i]       = law.piola_derivative(F, q[k], grad_phi[i]);
+                    dP[i]       = law->piola_derivative(F, q[k], grad_phi[i]);
                   }
                 for (unsigned int i = 0; i < n; ++i)
                   {
@@ -183,6 +186,9 @@ namespace rollnip
                         (scalar_product(dP[j], grad_phi[i]) + psi[j] * cof_i +
                          psi[i] * scalar_product(cof, grad_phi[j])) *
                         dx;
+                    if (compliance != 0)
+                      for (unsigned int j = 0; j < n; ++j)
+                        K(i, j) -= compliance * psi[i] * psi[j] * dx;
                   }
               }
             constraint_error += std::abs(cell_constraint);
@@ -206,8 +212,8 @@ namespace rollnip
       residual_u =
         condensed.l2_norm() /
         std::max(raw.l2_norm(),
-                 1e-8 * law.shear_modulus() * parameters.geometry.outer_radius *
-                   three_d.slice_thickness);
+                 1e-8 * law->shear_modulus() *
+                   parameters.geometry.outer_radius * three_d.slice_thickness);
       residual_q = Utilities::MPI::sum(constraint_error, communicator) /
                    GridTools::volume(triangulation);
     }

@@ -6,6 +6,9 @@
 
 #include <rollnip/material/material_law.h>
 
+#include <cmath>
+#include <limits>
+
 namespace rollnip
 {
   /**
@@ -15,15 +18,22 @@ namespace rollnip
    *   sigma = G (grad u + grad u^T) + q I,   div u = 0,
    * written with F = I + grad u so that the assembly treats both theories
    * alike. Reference and current configuration coincide, so P = sigma and
-   * the constraint tr(F - I) is linear.
+   * the constraint tr(F - I) is linear. With a finite bulk modulus K the
+   * constraint is div u - q/lambda, lambda = K - 2 G/3 (Hooke's law:
+   * sigma = 2 G eps + lambda tr(eps) I); lambda must then be positive.
    */
   template <int d>
   class LinearElasticLaw final : public MaterialLaw<d>
   {
   public:
-    /// The law of shear modulus @p G [MPa].
-    explicit LinearElasticLaw(const double G)
+    /// The law of shear modulus @p G [MPa] and bulk modulus
+    /// @p bulk_modulus [MPa] (infinity: incompressible).
+    explicit LinearElasticLaw(
+      const double G,
+      const double bulk_modulus = std::numeric_limits<double>::infinity())
         : G(G)
+        , compliance(
+            std::isinf(bulk_modulus) ? 0. : 1. / (bulk_modulus - 2. / 3. * G))
     {}
 
     dealii::Tensor<2, d>
@@ -62,7 +72,7 @@ namespace rollnip
       return dealii::symmetrize(piola(F, q));
     }
 
-    /// For d = 2: sigma_zz = q, since eps_zz = 0 and tr eps = 0.
+    /// For d = 2: sigma_zz = q, since eps_zz = 0 (and lambda tr eps = q).
     double
     out_of_plane_stress(const dealii::Tensor<2, d> &F,
                         const double                q) const override
@@ -79,8 +89,16 @@ namespace rollnip
       return G;
     }
 
+    /// 1/lambda; zero when incompressible.
+    double
+    pressure_compliance() const override
+    {
+      return compliance;
+    }
+
   private:
     const double G;
+    const double compliance;
   };
 } // namespace rollnip
 

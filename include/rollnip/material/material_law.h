@@ -11,9 +11,12 @@ namespace rollnip
    * need of a material law, and nothing more, for a deformation gradient F
    * of dimension d (d = 2: plane strain, F33 = 1). The residual is
    *   R_u = int P(F, q) : Grad v dV,   R_q = int w c(F) dV
-   * with c the incompressibility constraint, and its tangent needs
-   * dP[dF] at fixed q and dP/dq = dc/dF. Laws come from make_layer_law()
-   * (material/material_table.h), one per layer.
+   * with c the volume constraint, and its tangent needs dP[dF] at fixed q
+   * and dP/dq = dc/dF. A compressible law is the perturbed-Lagrangian form
+   *   c(F, q) = constraint(F) - pressure_compliance() q
+   * (pressure_compliance() = 1/kappa, zero for an incompressible law), so
+   * the pressure block of the tangent is -1/kappa M_p. Laws come from
+   * make_layer_law() (material/law_factory.h), one per layer.
    *
    * A law with internal variables (a viscoelastic one) evaluates at its
    * last committed state. commit() and rollback() are the named points
@@ -42,9 +45,17 @@ namespace rollnip
     virtual dealii::Tensor<2, d>
     pressure_direction(const dealii::Tensor<2, d> &F) const = 0;
 
-    /// The incompressibility residual c(F).
+    /// The kinematic part c(F) of the constraint residual (J - 1).
     virtual double
     constraint(const dealii::Tensor<2, d> &F) const = 0;
+
+    /// -dc/dq = 1/kappa [1/MPa]: zero (the default) for an exactly
+    /// incompressible law, positive for a compressible one.
+    virtual double
+    pressure_compliance() const
+    {
+      return 0;
+    }
 
     /// The Cauchy stress [MPa] (its in-plane part for d = 2).
     virtual dealii::SymmetricTensor<2, d>

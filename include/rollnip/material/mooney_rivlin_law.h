@@ -7,6 +7,9 @@
 #include <rollnip/kinematics.h>
 #include <rollnip/material/material_law.h>
 
+#include <cmath>
+#include <limits>
+
 namespace rollnip
 {
   /**
@@ -22,16 +25,30 @@ namespace rollnip
    * tension); the paper's multiplier is p_Batra = q - q_ref. The test
    * mooney_rivlin_3d checks the 3D law at a plane-strain F against the 2D
    * one and against an independent plane-strain code.
+   *
+   * With a finite bulk modulus K the law is compressible: the constraint
+   * becomes J - 1 - q/kappa, i.e. the stored energy gains
+   *   -q_ref (J - 1) + kappa/2 (J - 1)^2,
+   * and kappa = K - 2 G/3 + 2 C1 makes the small-strain law Hooke's law
+   * with shear modulus G and bulk modulus K (the term 2 C1 offsets the
+   * volumetric stiffness -2 C1 tr(eps) of the Mooney-Rivlin part).
    */
   template <int d>
   class MooneyRivlinLaw final : public MaterialLaw<d>
   {
   public:
-    /// The law with constants @p C1, @p C2 [MPa].
-    MooneyRivlinLaw(const double C1, const double C2)
+    /// The law with constants @p C1, @p C2 [MPa] and bulk modulus
+    /// @p bulk_modulus [MPa] (infinity: incompressible).
+    MooneyRivlinLaw(
+      const double C1,
+      const double C2,
+      const double bulk_modulus = std::numeric_limits<double>::infinity())
         : C1(C1)
         , C2(C2)
         , q_ref(2. * C1 + 4. * C2)
+        , compliance(std::isinf(bulk_modulus)
+                       ? 0.
+                       : 1. / (bulk_modulus - 4. / 3. * (C1 + C2) + 2. * C1))
     {}
 
     /// First Piola-Kirchhoff stress (eq. 2.3).
@@ -102,6 +119,13 @@ namespace rollnip
       return 2. * (C1 + C2);
     }
 
+    /// 1/kappa with kappa = K - 2 G/3 + 2 C1; zero when incompressible.
+    double
+    pressure_compliance() const override
+    {
+      return compliance;
+    }
+
     /// I1 of the 3x3 right Cauchy-Green tensor (C33 = 1 for d = 2).
     static double
     first_invariant(const dealii::Tensor<2, d> &F)
@@ -128,6 +152,7 @@ namespace rollnip
     const double C1;
     const double C2;
     const double q_ref;
+    const double compliance;
   };
 } // namespace rollnip
 

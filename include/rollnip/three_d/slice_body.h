@@ -10,9 +10,9 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <rollnip/contact/counter_surface.h>
+#include <rollnip/material/material_law.h>
 #include <rollnip/parameters.h>
 #include <rollnip/three_d/core_deflection.h>
-#include <rollnip/three_d/mooney_rivlin_law.h>
 #include <rollnip/three_d/slice_mesh.h>
 #include <rollnip/three_d/three_d_parameters.h>
 
@@ -64,7 +64,8 @@ namespace rollnip
 
     /**
      * The cover as a 3D body (slice_mesh.h): Q1-P0 (FE_Q(1)^3 x FE_DGP(0)),
-     * total Lagrangian, MooneyRivlinLaw<3>, pressed by the rigid indenter
+     * total Lagrangian, the surface layer's law from make_layer_law<3>()
+     * (incompressible or compressible), pressed by the rigid indenter
      * (a cylinder parallel to the roll axis, or a plane) of Contact. The
      * contact is frictionless and solved by a primal-dual active set on
      * the nodes of the outer surface inside Newton (semismooth Newton): a
@@ -187,14 +188,14 @@ namespace rollnip
       double
       active_gap(const double u0) const;
 
-      MPI_Comm                                  communicator;
-      const Parameters::AllParameters           parameters;
-      const Parameters::ThreeD                  three_d;
-      parallel::distributed::Triangulation<dim> triangulation;
-      FESystem<dim>                             fe;
-      DoFHandler<dim>                           dof_handler;
-      const MooneyRivlinLaw<dim>                law;
-      std::unique_ptr<CounterSurface>           indenter;
+      MPI_Comm                                      communicator;
+      const Parameters::AllParameters               parameters;
+      const Parameters::ThreeD                      three_d;
+      parallel::distributed::Triangulation<dim>     triangulation;
+      FESystem<dim>                                 fe;
+      DoFHandler<dim>                               dof_handler;
+      const std::unique_ptr<const MaterialLaw<dim>> law;
+      std::unique_ptr<CounterSurface>               indenter;
       /// c of the active-set rule, force / length [N/mm].
       double active_set_scale;
 
