@@ -3,7 +3,6 @@
 
 #include <rollnip/app/nip_report.h>
 #include <rollnip/app/nip_study.h>
-#include <rollnip/body/nested_transfer.h>
 #include <rollnip/boundary_ids.h>
 #include <rollnip/contact/counter_surface.h>
 #include <rollnip/contact/inverse_contact.h>
@@ -283,15 +282,8 @@ namespace rollnip
       {
         auto *mine   = dynamic_cast<InverseContact *>(&scene->nip_solver());
         auto *theirs = dynamic_cast<InverseContact *>(&primary.nip_solver());
-        if (!mine || !theirs || !theirs->last_converged().pressure ||
-            !transfer_nested_displacement(primary.roll().body(),
-                                          scene->roll().body()))
-          return;
-        InverseContact::Converged start;
-        start.state    = scene->roll().owned_solution();
-        start.pressure = theirs->last_converged().pressure;
-        start.theta0   = theirs->last_converged().theta0;
-        mine->restore_converged(start);
+        if (mine && theirs)
+          mine->start_from(*theirs);
       }
 
       /// Destroys the companion's objects, its timer silenced (it would

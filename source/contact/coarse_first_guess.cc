@@ -41,6 +41,17 @@ namespace rollnip
                    coarse_control_tolerance);
       return c;
     }
+
+    /// A scene with the parameters it refers to, which must outlive it.
+    struct OwningScene
+    {
+      OwningScene(const Parameters::AllParameters &p, const MPI_Comm comm)
+          : parameters(p)
+          , scene(parameters, comm)
+      {}
+      const Parameters::AllParameters parameters;
+      Scene                           scene;
+    };
   } // namespace
 
   bool
@@ -62,22 +73,24 @@ namespace rollnip
                      const double                     target,
                      const MPI_Comm                   comm)
   {
-    const Parameters::AllParameters coarse = coarse_parameters(p);
-    CoarseFirstGuess                guess;
-    Timer                           timer;
-    std::unique_ptr<Scene>          scene;
+    CoarseFirstGuess       guess;
+    Timer                  timer;
+    std::shared_ptr<Scene> scene;
     try
       {
         SilenceStream quiet(std::cout);
-        scene = std::make_unique<Scene>(coarse, comm);
+        const auto    owner =
+          std::make_shared<OwningScene>(coarse_parameters(p), comm);
+        scene = std::shared_ptr<Scene>(owner, &owner->scene);
         scene->roll().set_step_log(false);
-        NipControl          control(scene->nip_solver(), coarse);
+        NipControl          control(scene->nip_solver(), owner->parameters);
         const ContactResult r = control.solve(target);
         guess.n_solves        = control.n_contact_solves();
         if (r.converged)
           {
             guess.theta = r.theta0;
             guess.slope = control.local_slope(target);
+            guess.scene = scene;
           }
         else
           {

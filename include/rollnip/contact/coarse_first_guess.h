@@ -5,10 +5,13 @@
 
 #include <mpi.h>
 
+#include <memory>
 #include <string>
 
 namespace rollnip
 {
+  class Scene;
+
   /**
    * The first theta0 of a cold load or indentation target from the same
    * scene at mesh level 0 (rigid indenter): its nip-angle solves cost a few
@@ -27,6 +30,10 @@ namespace rollnip
     /// The largest q (P [N/mm] or u0 [mm]) of a coarse nip that converged
     /// and its theta0 [rad]; 0 if none did.
     double largest_reached = 0, largest_reached_theta = 0;
+    /// The level-0 scene, its last converged nip the guess's (null where
+    /// there is no guess): the fine mesh's first solve starts from its
+    /// state (InverseContact::start_from()).
+    std::shared_ptr<Scene> scene;
   };
 
   /// Whether the scene has a coarser level than its own to calibrate on
