@@ -26,13 +26,14 @@ namespace rollnip
     Parameters::AllParameters
     coarse_parameters(const Parameters::AllParameters &p)
     {
-      Parameters::AllParameters c = p;
-      c.mesh.global_refinements   = 0;
-      c.contact.compare_linear    = false;
-      c.output.print_timing       = false;
-      c.output.write_vtu          = false;
-      c.output.write_csv          = false;
-      c.accuracy.error_estimate   = false;
+      Parameters::AllParameters c           = p;
+      c.mesh.global_refinements             = 0;
+      c.mating_roll.mesh.global_refinements = 0;
+      c.contact.compare_linear              = false;
+      c.output.print_timing                 = false;
+      c.output.write_vtu                    = false;
+      c.output.write_csv                    = false;
+      c.accuracy.error_estimate             = false;
       c.contact.control_tolerance =
         std::max(p.contact.control_tolerance, coarse_control_tolerance);
       c.contact.tolerance =
@@ -60,11 +61,13 @@ namespace rollnip
     const bool controlled =
       p.contact.mode == Parameters::ContactMode::load ||
       p.contact.mode == Parameters::ContactMode::indentation;
-    // Not for two covered rolls: their P(theta0) depends on the history of
-    // the mating roll's refits by about 1e-4, and a changed path to the
-    // first nip can leave a later target stalled just off the control
-    // tolerance (parameters/two_rolls.prm at 60 N/mm).
-    return controlled && !p.mating_roll.covered &&
+    // Two covered rolls only for a single target: their P(theta0) depends
+    // on the history of the mating roll's refits by about 1e-4, and a
+    // changed path to the first nip can leave a later target of a sweep
+    // stalled just off the control tolerance (parameters/two_rolls.prm at
+    // 60 N/mm).
+    return controlled &&
+           (!p.mating_roll.covered || p.contact.values.size() == 1) &&
            p.mesh.global_refinements > 0;
   }
 

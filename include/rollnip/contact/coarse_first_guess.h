@@ -14,8 +14,8 @@ namespace rollnip
 
   /**
    * The first theta0 of a cold load or indentation target from the same
-   * scene at mesh level 0 (rigid indenter): its nip-angle solves cost a few
-   * milliseconds, and its P(theta0) or u0(theta0) differs from the fine
+   * scene at mesh level 0 (both rolls' meshes there): its nip-angle solves cost
+   * a few milliseconds, and its P(theta0) or u0(theta0) differs from the fine
    * mesh's by the discretisation error only, a few per cent at most, where
    * a closed-form law (Hertz, thin layer) misses a bonded layer of finite
    * thickness by tens of per cent.
@@ -37,7 +37,8 @@ namespace rollnip
   };
 
   /// Whether the scene has a coarser level than its own to calibrate on
-  /// (above level 0), a load or indentation control and a rigid indenter.
+  /// (above level 0), a load or indentation control, and a rigid indenter
+  /// or a single target (Contact/Values) against a covered mating roll.
   bool
   coarse_first_guess_pays(const Parameters::AllParameters &p);
 
