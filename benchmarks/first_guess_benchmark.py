@@ -13,8 +13,8 @@ before/after). Covers:
               3 radial cells
     thick     parameters/batra1980.prm (Spengos run 30: R1 47.2, R0 60.7)
     layered   parameters/layered_cover.prm
-    two rolls parameters/two_rolls.prm (the closed-form first guess: the
-              level-0 one is for a rigid indenter only)
+    two rolls parameters/two_rolls.prm (a single target: the level-0
+              guess with both rolls at level 0)
 Targets: P = 0.5, 2, 5, 10, 20, 40, 80 N/mm; u0 = 1, 3, 10, 20, 30 % of the
 cover thickness (the roll's; 10 % ... of 13.5 mm for two rolls).
 

@@ -3,7 +3,6 @@
 
 #include <rollnip/app/nip_report.h>
 #include <rollnip/app/nip_study.h>
-#include <rollnip/body/nested_transfer.h>
 #include <rollnip/boundary_ids.h>
 #include <rollnip/contact/counter_surface.h>
 #include <rollnip/contact/inverse_contact.h>
@@ -175,8 +174,9 @@ namespace rollnip
      * gives every number's error (estimate_errors()). It starts from the
      * answer: its theta0, its contact pressure, its displacement carried
      * over to the other level (warm_start()) and the slope of its control
-     * iteration, so that it needs a few Newton steps and one or two
-     * contact solves rather than a load ramp and a search.
+     * iteration, so that it needs a few Newton steps and two contact
+     * solves (interpolate_to_target()) rather than a load ramp and a
+     * search.
      */
     class ErrorCompanion
     {
@@ -234,65 +234,125 @@ namespace rollnip
             e.missing = unavailable;
             return e;
           }
-        Timer         timer;
-        ContactResult r;
+        Timer       timer;
+        NipNumbers  numbers;
+        std::string failure;
         try
           {
             SilenceStream quiet(std::cout);
-            warm_start(primary);
-            // A control of its own: the nips of earlier targets would
-            // give a worse slope than the primary's.
-            control =
-              std::make_unique<NipControl>(scene->nip_solver(), parameters);
-            r = control->solve(target, row.nonlinear.theta0, slope);
+            const bool    warm = warm_start(primary);
+            if (!(warm && slope > 0 &&
+                  interpolate_to_target(
+                    target, row.nonlinear.theta0, slope, numbers)))
+              failure = solve_controlled(target, row, slope, numbers);
           }
         catch (const std::exception &error)
           {
             if (is_local_error(error))
               throw;
-            r.converged = false;
-            r.message   = one_line_message(error);
+            failure = one_line_message(error);
           }
-        if (r.converged)
-          {
-            NipRow c;
-            c.nonlinear = r;
-            fill_nip_values(*scene, c);
-            e = estimate_errors(nip_numbers(row),
-                                nip_numbers(c),
-                                parameters.discretization.element,
-                                parameters.contact.mode,
-                                level,
-                                other);
-          }
+        if (failure.empty())
+          e = estimate_errors(nip_numbers(row),
+                              numbers,
+                              parameters.discretization.element,
+                              parameters.contact.mode,
+                              level,
+                              other);
         else
           e.missing = "the same nip at mesh level " + std::to_string(other) +
-                      " did not converge (" + r.message + ")";
+                      " did not converge (" + failure + ")";
         e.companion_level   = other;
         e.companion_seconds = timer.wall_time();
         return e;
       }
 
     private:
+      /// The numbers of the converged nip, solved for @p target with the
+      /// control from the primary's @p row and @p slope; empty, or why it
+      /// failed.
+      std::string
+      solve_controlled(const double  target,
+                       const NipRow &row,
+                       const double  slope,
+                       NipNumbers   &numbers)
+      {
+        // A control of its own: the nips of earlier targets would give a
+        // worse slope than the primary's.
+        control = std::make_unique<NipControl>(scene->nip_solver(), parameters);
+        NipRow c;
+        c.nonlinear = control->solve(target, row.nonlinear.theta0, slope);
+        if (!c.nonlinear.converged)
+          return c.nonlinear.message;
+        fill_nip_values(*scene, c);
+        numbers = nip_numbers(c);
+        return "";
+      }
+
+      /**
+       * Under load or indentation control, the numbers at @p target from
+       * two nip-angle solves instead of the control's iteration: at the
+       * primary's @p theta0 (which misses the target by the difference
+       * of the meshes, a few 1e-3) and one secant step from it with the
+       * primary's @p slope (d log q / d log theta0), then every number
+       * interpolated linearly in log q to the target. The interpolation
+       * errs by about the product of the two misses, which must lie
+       * within Contact/Control tolerance, the error the control's own
+       * last solve would leave; the control's third solve, which only
+       * closes that gap, is saved. Returns false where the two solves do
+       * not get there (the control then takes over).
+       */
+      bool
+      interpolate_to_target(const double target,
+                            const double theta0,
+                            const double slope,
+                            NipNumbers  &numbers)
+      {
+        if (parameters.contact.mode == Parameters::ContactMode::nip_angle)
+          return false;
+        const bool by_load =
+          parameters.contact.mode == Parameters::ContactMode::load;
+        const double tolerance = parameters.contact.control_tolerance;
+        NipRow       first, second;
+        // The controlled number of a converged solve, relative to target.
+        auto solve = [&](NipRow &row, const double theta) {
+          row.nonlinear = scene->nip_solver().solve(theta);
+          if (!row.nonlinear.converged)
+            return std::numeric_limits<double>::quiet_NaN();
+          fill_nip_values(*scene, row);
+          return std::log(
+            (by_load ? row.nonlinear.nip_load : row.nonlinear.indentation) /
+            target);
+        };
+        const double miss_1 = solve(first, theta0);
+        if (!std::isfinite(miss_1))
+          return false;
+        numbers = nip_numbers(first);
+        if (std::abs(miss_1) < tolerance)
+          return true;
+        const double miss_2 = solve(second, theta0 * std::exp(-miss_1 / slope));
+        if (!std::isfinite(miss_2) ||
+            !(std::abs(miss_1 * miss_2) < tolerance &&
+              std::abs(miss_2) < 0.5 * std::abs(miss_1)))
+          return false;
+        const NipNumbers at_2 = nip_numbers(second);
+        const double     w    = miss_1 / (miss_1 - miss_2);
+        for (unsigned int q = 0; q < NipQuantity::n_quantities; ++q)
+          numbers[q] += w * (at_2[q] - numbers[q]);
+        return true;
+      }
+
       /// The state of the primary's converged nip on this scene's mesh,
       /// with its contact pressure and theta0, as the last converged nip
-      /// of the contact solver; nothing where the meshes do not nest or
-      /// the counter surface is a covered roll (then the companion starts
-      /// from its last nip, as a sweep does).
-      void
+      /// of the contact solver; false, and nothing done, where the meshes
+      /// do not nest or the counter surface is a covered roll (then the
+      /// companion starts from its last nip, as a sweep does).
+      bool
       warm_start(Scene &primary)
       {
         auto *mine   = dynamic_cast<InverseContact *>(&scene->nip_solver());
         auto *theirs = dynamic_cast<InverseContact *>(&primary.nip_solver());
-        if (!mine || !theirs || !theirs->last_converged().pressure ||
-            !transfer_nested_displacement(primary.roll().body(),
-                                          scene->roll().body()))
-          return;
-        InverseContact::Converged start;
-        start.state    = scene->roll().owned_solution();
-        start.pressure = theirs->last_converged().pressure;
-        start.theta0   = theirs->last_converged().theta0;
-        mine->restore_converged(start);
+        return mine && theirs && mine->start_from(*theirs);
       }
 
       /// Destroys the companion's objects, its timer silenced (it would

@@ -1,11 +1,13 @@
 #include <deal.II/base/mpi.h>
 
+#include <rollnip/body/nested_transfer.h>
 #include <rollnip/boundary_ids.h>
 #include <rollnip/contact/inverse_contact.h>
 #include <rollnip/contact/nip_estimates.h>
 #include <rollnip/geometry/angles.h>
 #include <rollnip/material/material_table.h>
 #include <rollnip/output/atomic_file.h>
+#include <rollnip/problem.h>
 #include <rollnip/solvers/iteration_controls.h>
 #include <rollnip/solvers/tolerance_floor.h>
 
@@ -534,6 +536,26 @@ namespace rollnip
     body.set_solution(start);
     applied_pressure = converged.pressure;
     applied_theta0   = converged.theta0;
+  }
+
+  bool
+  InverseContact::start_from(const InverseContact &other)
+  {
+    // The roll problems behind both contact bodies (a scene's nip solver
+    // iterates on its RollProblem).
+    auto       *mine   = dynamic_cast<RollProblem *>(&body);
+    const auto *theirs = dynamic_cast<const RollProblem *>(&other.body);
+    if (!mine || !theirs || !other.converged.pressure)
+      return false;
+    // Its current state is that nip: a solve that fails goes back to it.
+    if (!transfer_nested_displacement(theirs->body(), mine->body()))
+      return false;
+    Converged start;
+    start.state    = body.owned_solution();
+    start.pressure = other.converged.pressure;
+    start.theta0   = other.converged.theta0;
+    restore_converged(start);
+    return true;
   }
 
   void

@@ -5,6 +5,7 @@
 #include <rollnip/contact/nip_estimates.h>
 #include <rollnip/interrupt.h>
 #include <rollnip/material/material_table.h>
+#include <rollnip/scene/scene_builder.h>
 #include <rollnip/solvers/iteration_controls.h>
 
 #include <algorithm>
@@ -33,6 +34,19 @@ namespace rollnip
     /// Marks the message of a contact solve that stalled on round-off
     /// (InverseContact::damp()).
     const std::string stalled_on_round_off = "stalled on round-off";
+
+    /// The first solve on the run's mesh starts from the level-0 nip of
+    /// the first guess, its state carried over (the meshes nest at the
+    /// same theta0), rather than from the unloaded cover: a few Newton
+    /// steps instead of a load ramp.
+    void
+    start_from_coarse(NipSolver &fine, Scene &coarse)
+    {
+      auto *mine   = dynamic_cast<InverseContact *>(&fine);
+      auto *theirs = dynamic_cast<InverseContact *>(&coarse.nip_solver());
+      if (mine && theirs)
+        mine->start_from(*theirs);
+    }
 
     /// Why a target is not reached when the contact solve failed at every
     /// theta0 from @p first down to @p last [rad], the last for @p why.
@@ -123,6 +137,7 @@ namespace rollnip
       {
         slope_hint  = c.slope;
         hint_target = target;
+        start_from_coarse(contact, *c.scene);
         pcout << "First guess from mesh level 0: theta0 = " << std::fixed
               << std::setprecision(6) << c.theta * deg << " deg (" << c.n_solves
               << " coarse contact solves, " << std::setprecision(3) << c.seconds

@@ -5,14 +5,17 @@
 
 #include <mpi.h>
 
+#include <memory>
 #include <string>
 
 namespace rollnip
 {
+  class Scene;
+
   /**
    * The first theta0 of a cold load or indentation target from the same
-   * scene at mesh level 0 (rigid indenter): its nip-angle solves cost a few
-   * milliseconds, and its P(theta0) or u0(theta0) differs from the fine
+   * scene at mesh level 0 (both rolls' meshes there): its nip-angle solves cost
+   * a few milliseconds, and its P(theta0) or u0(theta0) differs from the fine
    * mesh's by the discretisation error only, a few per cent at most, where
    * a closed-form law (Hertz, thin layer) misses a bonded layer of finite
    * thickness by tens of per cent.
@@ -27,10 +30,15 @@ namespace rollnip
     /// The largest q (P [N/mm] or u0 [mm]) of a coarse nip that converged
     /// and its theta0 [rad]; 0 if none did.
     double largest_reached = 0, largest_reached_theta = 0;
+    /// The level-0 scene, its last converged nip the guess's (null where
+    /// there is no guess): the fine mesh's first solve starts from its
+    /// state (InverseContact::start_from()).
+    std::shared_ptr<Scene> scene;
   };
 
   /// Whether the scene has a coarser level than its own to calibrate on
-  /// (above level 0), a load or indentation control and a rigid indenter.
+  /// (above level 0), a load or indentation control, and a rigid indenter
+  /// or a single target (Contact/Values) against a covered mating roll.
   bool
   coarse_first_guess_pays(const Parameters::AllParameters &p);
 

@@ -85,6 +85,15 @@ namespace rollnip
     void
     restore_converged(const Converged &nip);
 
+    /// The last converged nip of @p other, the same scene on a nested mesh
+    /// of another level or element, as this one's last converged nip: its
+    /// displacement carried over (transfer_nested_displacement()), its
+    /// pressure and theta0. The next solve then starts from it instead of
+    /// from the unloaded cover. Returns false, and changes nothing, where
+    /// @p other has no converged nip or the meshes do not nest.
+    bool
+    start_from(const InverseContact &other);
+
     /// The conformity tolerance of its iteration, a fraction of u0.
     double
     tolerance() const
