@@ -20,12 +20,13 @@ namespace rollnip
       write_atomically(path, [&](std::ostream &out) {
         out << std::setprecision(10)
             << "u0_mm,P_N_per_mm,half_chord_b_mm,contact_length_mm,"
-               "active_nodes,newton_steps,max_penetration_mm,wall_time_s\n";
+               "active_nodes,newton_steps,max_penetration_mm,wall_time_s,"
+               "gmres_iterations\n";
         for (unsigned int k = 0; k < nips.size(); ++k)
           out << nips[k].u0 << ',' << nips[k].P << ',' << nips[k].half_chord
               << ',' << nips[k].contact_length << ',' << nips[k].active_nodes
               << ',' << nips[k].newton_steps << ',' << nips[k].max_penetration
-              << ',' << seconds[k] << '\n';
+              << ',' << seconds[k] << ',' << nips[k].linear_iterations << '\n';
       });
     }
 
@@ -49,6 +50,7 @@ namespace rollnip
             << "n_cells = " << body.n_cells() << '\n'
             << "n_dofs = " << body.n_dofs() << '\n'
             << "mpi_processes = " << processes << '\n'
+            << "linear_solver = " << parameters.linear_solver.method << '\n'
             << "slice_thickness_mm = " << three_d.slice_thickness << '\n'
             << "far_face = " << (three_d.fix_far_face ? "fixed axial" : "free")
             << '\n'
@@ -85,7 +87,9 @@ namespace rollnip
         make_directories(directory);
         std::cout << "3D slice: " << body.n_cells() << " cells, "
                   << body.n_dofs() << " DoFs, " << three_d.slice_thickness
-                  << " mm thick" << std::endl;
+                  << " mm thick" << std::endl
+                  << "  linear solver: " << body.linear_solver_name()
+                  << std::endl;
       }
     std::vector<three_d::SliceNip> nips;
     std::vector<double>            seconds;
@@ -100,6 +104,10 @@ namespace rollnip
                     << " N/mm, b = " << nips.back().half_chord << " mm, "
                     << nips.back().active_nodes << " active nodes, "
                     << nips.back().newton_steps << " Newton steps, "
+                    << (nips.back().linear_iterations > 0
+                          ? std::to_string(nips.back().linear_iterations) +
+                              " GMRES iterations, "
+                          : std::string())
                     << seconds.back() << " s" << std::endl;
         if (!three_d.fix_far_face)
           free_ends.push_back(three_d::evaluate_free_end(body, u0));
