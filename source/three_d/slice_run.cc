@@ -2,6 +2,7 @@
 
 #include <rollnip/output/atomic_file.h>
 #include <rollnip/three_d/free_end.h>
+#include <rollnip/three_d/load_control.h>
 #include <rollnip/three_d/slice_body.h>
 #include <rollnip/three_d/slice_run.h>
 
@@ -72,9 +73,13 @@ namespace rollnip
               const Parameters::ThreeD        &three_d,
               MPI_Comm                         communicator)
   {
-    AssertThrow(parameters.contact.mode == Parameters::ContactMode::indentation,
+    using Mode             = Parameters::ContactMode;
+    const Mode mode        = parameters.contact.mode;
+    const bool load_driven = mode == Mode::load;
+    AssertThrow(mode == Mode::indentation || load_driven,
                 ExcMessage("Three d: Contact/Mode must be indentation (the "
-                           "approaches u0 are Contact/Values)"));
+                           "approaches u0 are Contact/Values) or load (the "
+                           "line loads P)"));
     const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
     const std::string &directory = parameters.output.directory;
     Timer              total;
@@ -94,10 +99,20 @@ namespace rollnip
     std::vector<three_d::SliceNip> nips;
     std::vector<double>            seconds;
     std::vector<three_d::FreeEnd>  free_ends; // Far face = free only
-    for (const double u0 : parameters.contact.values)
+    for (const double value : parameters.contact.values)
       {
         Timer timer;
-        nips.push_back(body.solve(u0));
+        nips.push_back(
+          load_driven
+            ? three_d::solve_for_load(body,
+                                      value,
+                                      nips.empty() ? three_d::SliceNip()
+                                                   : nips.back(),
+                                      three_d.approach_step,
+                                      parameters.contact.control_tolerance,
+                                      parameters.contact.max_iterations)
+            : body.solve(value));
+        const double u0 = nips.back().u0;
         seconds.push_back(timer.wall_time());
         if (root)
           std::cout << "  u0 = " << u0 << " mm: P = " << nips.back().P
