@@ -24,6 +24,10 @@
 #   wall s          elapsed time of the whole command (mpirun, start-up,
 #                   mesh, the sweep, output), /usr/bin/time %e
 #   sweep s         wall_time_s of summary.txt (rollnip's own clock)
+#   CPU s           user + system CPU time summed over the ranks
+#                   (/usr/bin/time %U %S around each rank): on a machine
+#                   shared with other jobs the wall time is an upper bound,
+#                   the CPU time is the work done
 #   Newton          Newton steps summed over the approaches (slice_3d.csv)
 #   GMRES           GMRES iterations summed over them (0 for direct)
 #   peak MB/rank    largest peak resident memory of one rank
@@ -63,14 +67,14 @@ value() { awk -F' = ' -v k="$2" '$1 == k { print $2 }' "$1"; }
 cat > "$work/rank.sh" <<'RANK'
 #!/usr/bin/env bash
 rank="${OMPI_COMM_WORLD_RANK:-${PMI_RANK:-0}}"
-exec /usr/bin/time -f %M -o "$MEM_DIR/mem.$rank" \
+exec /usr/bin/time -f "%M %U %S" -o "$MEM_DIR/mem.$rank" \
   timeout --signal=KILL "$RUN_TIMEOUT" "$@"
 RANK
 chmod +x "$work/rank.sh"
 
 mkdir -p "$(dirname "$csv")"
-echo "level,layers,dofs,solver,processes,oversubscribed,wall_time_s,sweep_time_s,newton_steps,gmres_iterations,peak_rss_per_rank_MB,peak_rss_total_MB,P_N_per_mm,u0_mm,load_average" > "$csv"
-printf '%5s %6s %9s %9s %3s %7s %8s %8s %6s %6s %12s %9s %10s %5s\n' level layers DoFs solver np oversub "wall s" "sweep s" Newton GMRES "peak MB/rank" "total MB" "P N/mm" load
+echo "level,layers,dofs,solver,processes,oversubscribed,wall_time_s,sweep_time_s,cpu_time_s,newton_steps,gmres_iterations,peak_rss_per_rank_MB,peak_rss_total_MB,P_N_per_mm,u0_mm,load_average" > "$csv"
+printf '%5s %6s %9s %9s %3s %7s %8s %8s %8s %6s %6s %12s %9s %10s %5s\n' level layers DoFs solver np oversub "wall s" "sweep s" "CPU s" Newton GMRES "peak MB/rank" "total MB" "P N/mm" load
 for size in "${sizes[@]}"; do
   level="${size%%:*}"
   layers="${size##*:}"
@@ -116,7 +120,7 @@ PRM
     if [ "$rc" -ne 0 ]; then
       tail -n 5 "$work/log.txt" >&2
       echo "scaling_3d: level $level, $layers layers, $solver, $np processes: failed (exit $rc; 137 or 124: stopped after ${run_timeout} s)" >&2
-      echo "$level,$layers,,$solver,$np,$oversub,,,,,,,,$u0,$(cut -d' ' -f1 /proc/loadavg)" >> "$csv"
+      echo "$level,$layers,,$solver,$np,$oversub,,,,,,,,,$u0,$(cut -d' ' -f1 /proc/loadavg)" >> "$csv"
       continue
     fi
     s="$out/summary.txt"
@@ -127,10 +131,10 @@ PRM
     gmres="$(awk -F, 'NR > 1 { n += $9 } END { print n }' "$out/slice_3d.csv")"
     load="$(cut -d' ' -f1 /proc/loadavg)"
     elapsed="$(tail -n 1 "$work/elapsed")"
-    read -r peak total < <(cat "$work"/mem/mem.* | awk '$1 ~ /^[0-9]+$/ { if ($1 > m) m = $1; t += $1 } END { printf "%.0f %.0f\n", m / 1024, t / 1024 }')
-    printf '%5d %6d %9d %9s %3d %7s %8.1f %8.1f %6d %6d %12d %9d %10.6f %5s\n' \
-      "$level" "$layers" "$dofs" "$solver" "$np" "$oversub" "$elapsed" "$sweep" "$newton" "$gmres" "$peak" "$total" "$P" "$load"
-    echo "$level,$layers,$dofs,$solver,$np,$oversub,$elapsed,$sweep,$newton,$gmres,$peak,$total,$P,$u0,$load" >> "$csv"
+    read -r peak total cpu < <(cat "$work"/mem/mem.* | awk '$1 ~ /^[0-9]+$/ { if ($1 > m) m = $1; t += $1; c += $2 + $3 } END { printf "%.0f %.0f %.1f\n", m / 1024, t / 1024, c }')
+    printf '%5d %6d %9d %9s %3d %7s %8.1f %8.1f %8.1f %6d %6d %12d %9d %10.6f %5s\n' \
+      "$level" "$layers" "$dofs" "$solver" "$np" "$oversub" "$elapsed" "$sweep" "$cpu" "$newton" "$gmres" "$peak" "$total" "$P" "$load"
+    echo "$level,$layers,$dofs,$solver,$np,$oversub,$elapsed,$sweep,$cpu,$newton,$gmres,$peak,$total,$P,$u0,$load" >> "$csv"
   done
   done
 done
