@@ -1,6 +1,5 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/fe/component_mask.h>
-#include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <rollnip/three_d/slice_body.h>
@@ -144,13 +143,8 @@ namespace rollnip
           else if (it > 0 && residual_u < 1e-10 && residual_q < 1e-12 &&
                    active_gap(u0) < 1e-10 * parameters.geometry.outer_radius)
             return true;
-          SolverControl                  control(1, 0);
-          TrilinosWrappers::SolverDirect solver(
-            control,
-            TrilinosWrappers::SolverDirect::AdditionalData(false,
-                                                           "Amesos_Mumps"));
           du = 0;
-          solver.solve(system_matrix, du, system_rhs);
+          solve_linear(du);
           constraints.distribute(du);
           state = solution;
           state += du;
@@ -170,8 +164,9 @@ namespace rollnip
                  std::ceil(std::max(std::abs(u0 - current_u0), core_left) /
                              three_d.approach_step -
                            1e-9));
-      const double start = current_u0, core_start = core_factor;
-      unsigned int steps = 0;
+      const double       start = current_u0, core_start = core_factor;
+      unsigned int       steps        = 0;
+      const unsigned int gmres_before = block_amg ? block_amg->n_iterations : 0;
       for (unsigned int s = 1; s <= n_steps; ++s)
         {
           const double u = start + (u0 - start) * s / n_steps;
@@ -184,6 +179,8 @@ namespace rollnip
         }
       SliceNip nip     = evaluate(u0);
       nip.newton_steps = steps;
+      nip.linear_iterations =
+        block_amg ? block_amg->n_iterations - gmres_before : 0;
       return nip;
     }
 

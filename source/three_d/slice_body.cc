@@ -26,6 +26,56 @@ namespace rollnip
       {
         return Point<2>(x[0], x[1]);
       }
+
+      /// The augmented Lagrangian form of the cell's Newton system: every
+      /// displacement row plus gamma / |cell| B^T times the cell's pressure
+      /// row (the linearised constraint of this cell alone, P0), so that
+      /// A becomes A + gamma B^T M_p^-1 B with the same solution.
+      void
+      augment_cell_system(const FESystem<dim> &fe,
+                          const double         volume,
+                          const double         gamma,
+                          FullMatrix<double>  &K,
+                          Vector<double>      &R)
+      {
+        if (gamma == 0)
+          return;
+        const unsigned int n = fe.n_dofs_per_cell();
+        const unsigned int p = fe.component_to_system_index(dim, 0);
+        const double       w = gamma / volume;
+        for (unsigned int i = 0; i < n; ++i)
+          if (i != p)
+            {
+              const double b_i = w * K(i, p);
+              // j = p too: a compressible cover's K(p, p) = -|cell|/kappa.
+              for (unsigned int j = 0; j < n; ++j)
+                K(i, j) += b_i * K(p, j);
+              R(i) += b_i * R(p);
+            }
+      }
+
+      /// The cell matrix of [A 0; 0 M_p/G] for the AMG: the displacement
+      /// block of @p K and, for the P0 pressure, |cell| / G on the diagonal.
+      void
+      make_augmented_cell_matrix(const FESystem<dim>      &fe,
+                                 const FullMatrix<double> &K,
+                                 const double              pressure_diagonal,
+                                 FullMatrix<double>       &augmented)
+      {
+        const unsigned int n = fe.n_dofs_per_cell();
+        augmented.reinit(n, n);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            if (fe.system_to_component_index(i).first == dim)
+              {
+                augmented(i, i) = pressure_diagonal;
+                continue;
+              }
+            for (unsigned int j = 0; j < n; ++j)
+              if (fe.system_to_component_index(j).first < dim)
+                augmented(i, j) = K(i, j);
+          }
+      }
     } // namespace
 
     SliceBody::SliceBody(const Parameters::AllParameters &parameters,
@@ -42,6 +92,8 @@ namespace rollnip
                                   parameters.material.n_layers() - 1))
         , indenter(make_counter_surface(parameters.geometry.outer_radius,
                                         parameters.contact.indenter_radius))
+        , iterative(parameters.linear_solver.method == "gmres-amg")
+        , augmentation(iterative ? 10. * law->shear_modulus() : 0.)
         , core(three_d.core_deflection)
     {
       AssertThrow(parameters.discretization.element ==
@@ -83,6 +135,14 @@ namespace rollnip
       solution.reinit(owned, relevant, communicator);
       reactions.reinit(owned, relevant, communicator);
       system_rhs.reinit(owned, communicator);
+      if (iterative)
+        {
+          preconditioner_matrix.reinit(owned, owned, dsp, communicator);
+          block_amg = std::make_unique<SliceBlockSolver>(
+            parameters.linear_solver.iterative_tolerance,
+            parameters.linear_solver.max_iterations);
+          block_amg->setup(dof_handler, law->shear_modulus() + augmentation);
+        }
     }
 
     void
@@ -134,6 +194,8 @@ namespace rollnip
     {
       system_matrix = 0;
       system_rhs    = 0;
+      if (iterative)
+        preconditioner_matrix = 0;
       TrilinosWrappers::MPI::Vector raw(owned, communicator),
         condensed(owned, communicator);
       const QGauss<dim>                    quadrature(2);
@@ -143,7 +205,7 @@ namespace rollnip
       const unsigned int                   n = fe.n_dofs_per_cell();
       const FEValuesExtractors::Vector     u_ex(0);
       const FEValuesExtractors::Scalar     q_ex(dim);
-      FullMatrix<double>                   K(n, n);
+      FullMatrix<double>                   K(n, n), K_amg;
       Vector<double>                       R(n), R_u(n);
       std::vector<types::global_dof_index> dofs(n);
       std::vector<Tensor<2, dim>>          grad_u(quadrature.size());
@@ -161,7 +223,7 @@ namespace rollnip
             R = 0;
             fv[u_ex].get_function_gradients(solution, grad_u);
             fv[q_ex].get_function_values(solution, q);
-            double cell_constraint = 0;
+            double cell_constraint = 0, cell_volume = 0;
             for (unsigned int k = 0; k < quadrature.size(); ++k)
               {
                 const Tensor<2, dim> F =
@@ -171,6 +233,7 @@ namespace rollnip
                 const double         g = law->constraint(F) - compliance * q[k];
                 const double         dx = fv.JxW(k);
                 cell_constraint += g * dx;
+                cell_volume += dx;
                 for (unsigned int i = 0; i < n; ++i)
                   {
                     grad_phi[i] = fv[u_ex].gradient(i, k);
@@ -200,11 +263,26 @@ namespace rollnip
             homogeneous_constraints.distribute_local_to_global(R_u,
                                                                dofs,
                                                                condensed);
+            if (iterative)
+              augment_cell_system(fe, cell_volume, augmentation, K, R);
             R *= -1.;
             constraints.distribute_local_to_global(
               K, R, dofs, system_matrix, system_rhs, true);
+            if (iterative)
+              {
+                make_augmented_cell_matrix(fe,
+                                           K,
+                                           cell_volume / (law->shear_modulus() +
+                                                          augmentation),
+                                           K_amg);
+                constraints.distribute_local_to_global(K_amg,
+                                                       dofs,
+                                                       preconditioner_matrix);
+              }
           }
       system_matrix.compress(VectorOperation::add);
+      if (iterative)
+        preconditioner_matrix.compress(VectorOperation::add);
       system_rhs.compress(VectorOperation::add);
       raw.compress(VectorOperation::add);
       condensed.compress(VectorOperation::add);

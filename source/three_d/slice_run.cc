@@ -2,6 +2,7 @@
 
 #include <rollnip/output/atomic_file.h>
 #include <rollnip/three_d/free_end.h>
+#include <rollnip/three_d/load_control.h>
 #include <rollnip/three_d/slice_body.h>
 #include <rollnip/three_d/slice_run.h>
 
@@ -20,12 +21,13 @@ namespace rollnip
       write_atomically(path, [&](std::ostream &out) {
         out << std::setprecision(10)
             << "u0_mm,P_N_per_mm,half_chord_b_mm,contact_length_mm,"
-               "active_nodes,newton_steps,max_penetration_mm,wall_time_s\n";
+               "active_nodes,newton_steps,max_penetration_mm,wall_time_s,"
+               "gmres_iterations\n";
         for (unsigned int k = 0; k < nips.size(); ++k)
           out << nips[k].u0 << ',' << nips[k].P << ',' << nips[k].half_chord
               << ',' << nips[k].contact_length << ',' << nips[k].active_nodes
               << ',' << nips[k].newton_steps << ',' << nips[k].max_penetration
-              << ',' << seconds[k] << '\n';
+              << ',' << seconds[k] << ',' << nips[k].linear_iterations << '\n';
       });
     }
 
@@ -49,6 +51,7 @@ namespace rollnip
             << "n_cells = " << body.n_cells() << '\n'
             << "n_dofs = " << body.n_dofs() << '\n'
             << "mpi_processes = " << processes << '\n'
+            << "linear_solver = " << parameters.linear_solver.method << '\n'
             << "slice_thickness_mm = " << three_d.slice_thickness << '\n'
             << "far_face = " << (three_d.fix_far_face ? "fixed axial" : "free")
             << '\n'
@@ -70,9 +73,13 @@ namespace rollnip
               const Parameters::ThreeD        &three_d,
               MPI_Comm                         communicator)
   {
-    AssertThrow(parameters.contact.mode == Parameters::ContactMode::indentation,
+    using Mode             = Parameters::ContactMode;
+    const Mode mode        = parameters.contact.mode;
+    const bool load_driven = mode == Mode::load;
+    AssertThrow(mode == Mode::indentation || load_driven,
                 ExcMessage("Three d: Contact/Mode must be indentation (the "
-                           "approaches u0 are Contact/Values)"));
+                           "approaches u0 are Contact/Values) or load (the "
+                           "line loads P)"));
     const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
     const std::string &directory = parameters.output.directory;
     Timer              total;
@@ -85,21 +92,37 @@ namespace rollnip
         make_directories(directory);
         std::cout << "3D slice: " << body.n_cells() << " cells, "
                   << body.n_dofs() << " DoFs, " << three_d.slice_thickness
-                  << " mm thick" << std::endl;
+                  << " mm thick" << std::endl
+                  << "  linear solver: " << body.linear_solver_name()
+                  << std::endl;
       }
     std::vector<three_d::SliceNip> nips;
     std::vector<double>            seconds;
     std::vector<three_d::FreeEnd>  free_ends; // Far face = free only
-    for (const double u0 : parameters.contact.values)
+    for (const double value : parameters.contact.values)
       {
         Timer timer;
-        nips.push_back(body.solve(u0));
+        nips.push_back(
+          load_driven
+            ? three_d::solve_for_load(body,
+                                      value,
+                                      nips.empty() ? three_d::SliceNip()
+                                                   : nips.back(),
+                                      three_d.approach_step,
+                                      parameters.contact.control_tolerance,
+                                      parameters.contact.max_iterations)
+            : body.solve(value));
+        const double u0 = nips.back().u0;
         seconds.push_back(timer.wall_time());
         if (root)
           std::cout << "  u0 = " << u0 << " mm: P = " << nips.back().P
                     << " N/mm, b = " << nips.back().half_chord << " mm, "
                     << nips.back().active_nodes << " active nodes, "
                     << nips.back().newton_steps << " Newton steps, "
+                    << (nips.back().linear_iterations > 0
+                          ? std::to_string(nips.back().linear_iterations) +
+                              " GMRES iterations, "
+                          : std::string())
                     << seconds.back() << " s" << std::endl;
         if (!three_d.fix_far_face)
           free_ends.push_back(three_d::evaluate_free_end(body, u0));

@@ -4,24 +4,27 @@
 # on one and on NP MPI processes, and its parallel output is one .pvtu
 # record with a piece per process.
 #
-# Usage: bash mpi_equivalence_3d.sh ROLLNIP MPIEXEC NUMDIFF PRM [NP]
+# Usage: bash mpi_equivalence_3d.sh ROLLNIP MPIEXEC NUMDIFF PRM [NP [METHOD]]
 #
 # Runs PRM at mesh level 0 with two cells through the thickness (so that
 # the partition cuts the slice), once without mpirun and once with
 # 'MPIEXEC -np NP' (default 2; Open MPI gets --oversubscribe, so NP may
 # exceed the cores), and compares slice_3d.csv and summary.txt (without
 # the timings and the process count) with numdiff, relative 1e-8 (Newton
-# stops at a relative residual of 1e-10).
+# stops at a relative residual of 1e-10). METHOD (default direct) is
+# Linear solver/Method of both runs: gmres-amg checks the iterative path,
+# whose AMG hierarchy depends on the partition.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-[ $# -eq 4 ] || [ $# -eq 5 ] ||
-  fail "usage: mpi_equivalence_3d.sh ROLLNIP MPIEXEC NUMDIFF PRM [NP]"
+[ $# -ge 4 ] && [ $# -le 6 ] ||
+  fail "usage: mpi_equivalence_3d.sh ROLLNIP MPIEXEC NUMDIFF PRM [NP [METHOD]]"
 rollnip="$(realpath "$1")"
 mpiexec="$2"
 numdiff="$3"
 scene="$(realpath "$4")"
 np="${5:-2}"
+method="${6:-direct}"
 [[ "$np" =~ ^[1-9][0-9]*$ ]] && [ "$np" -ge 2 ] ||
   fail "NP must be an integer of at least 2, got '$np'"
 require_executable rollnip "$rollnip"
@@ -37,6 +40,7 @@ make_prm()
   printf '\nsubsection Mesh\n  set Global refinements = 0\nend\n' >> "$1"
   printf 'subsection Three d\n  set Layers = 2\nend\n' >> "$1"
   printf 'subsection Output\n  set Directory = %s\nend\n' "$2" >> "$1"
+  printf 'subsection Linear solver\n  set Method = %s\nend\n' "$method" >> "$1"
 }
 make_prm serial.prm out_serial
 make_prm parallel.prm out_parallel
@@ -48,6 +52,11 @@ timeout --kill-after=10 300 "$mpiexec" "${mpi_flags[@]}" -np "$np" "$rollnip" \
   parallel.prm > parallel.log 2>&1 || rc=$?
 [ "$rc" -eq 0 ] || { cat parallel.log; fail "the run on $np MPI processes failed (exit code $rc)"; }
 pass "run on $np MPI processes finished"
+for log in serial.log parallel.log; do
+  grep -q "linear solver: $method" "$log" ||
+    fail "$log does not print 'linear solver: $method'"
+done
+pass "both runs print 'linear solver: $method'"
 
 [ "$(summary_value out_serial/summary.txt mpi_processes)" -eq 1 ] &&
   [ "$(summary_value out_parallel/summary.txt mpi_processes)" -eq "$np" ] ||

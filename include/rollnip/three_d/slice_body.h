@@ -13,6 +13,7 @@
 #include <rollnip/material/material_law.h>
 #include <rollnip/parameters.h>
 #include <rollnip/three_d/core_deflection.h>
+#include <rollnip/three_d/slice_block_solver.h>
 #include <rollnip/three_d/slice_mesh.h>
 #include <rollnip/three_d/three_d_parameters.h>
 
@@ -36,6 +37,8 @@ namespace rollnip
       unsigned int active_nodes    = 0;
       unsigned int newton_steps    = 0; ///< over all load steps
       double       max_penetration = 0; ///< max(-gap) over the surface [mm]
+      /// GMRES iterations over all Newton steps (0 with the direct solver).
+      unsigned int linear_iterations = 0;
     };
 
     /// Where and how hard the indenter presses (slice_patch.cc).
@@ -111,6 +114,10 @@ namespace rollnip
         return dof_handler.n_dofs();
       }
 
+      /// The linear solver of the Newton steps, as printed at the start.
+      std::string
+      linear_solver_name() const;
+
       unsigned int
       n_cells() const
       {
@@ -173,6 +180,9 @@ namespace rollnip
       update_active_set(const double u0);
       void
       make_constraints(const double u0);
+      /// du = K^-1 system_rhs by Linear solver/Method (slice_linear_solve.cc).
+      void
+      solve_linear(TrilinosWrappers::MPI::Vector &du);
       /// Newton with the active set at fixed u0; false if it failed.
       bool
       newton(const double u0, unsigned int &steps);
@@ -211,6 +221,17 @@ namespace rollnip
       TrilinosWrappers::MPI::Vector  reactions;  ///< unconstrained, ghosted
       double                         residual_u = 0, residual_q = 0;
       double                         current_u0 = 0;
+
+      // Linear solver/Method = gmres-amg (slice_linear_solve.cc).
+      const bool iterative;
+      /// gamma of the augmented Lagrangian, 10 G [MPa]: the Newton system
+      /// is solved as [A + gamma B^T M_p^-1 B, B^T; B, 0] (the same du),
+      /// whose Schur complement G M_p^-1 + gamma M_p^-1 approximates well
+      /// whatever the inf-sup constant of Q1-P0; 0 with the direct solver.
+      const double augmentation;
+      /// [A 0; 0 M_p/G], the AMG's matrix, assembled beside K.
+      TrilinosWrappers::SparseMatrix    preconditioner_matrix;
+      std::unique_ptr<SliceBlockSolver> block_amg;
 
       // The prescribed core deflection (slice_core.cc).
       /// The bonded nodes' x dofs at R1 and their v(z) [mm].

@@ -1,0 +1,44 @@
+#include <deal.II/lac/trilinos_solver.h>
+
+#include <rollnip/three_d/slice_body.h>
+
+#include <sstream>
+
+namespace rollnip
+{
+  namespace three_d
+  {
+    std::string
+    SliceBody::linear_solver_name() const
+    {
+      const Parameters::LinearSolver &settings = parameters.linear_solver;
+      std::ostringstream              name;
+      if (iterative)
+        name << "gmres-amg (GMRES to a relative residual of "
+             << settings.iterative_tolerance
+             << "; augmented Lagrangian, gamma = " << augmentation
+             << " MPa; AMG with the rigid-body modes on the displacements)";
+      else
+        name << "direct (" << settings.direct_solver << ')';
+      return name.str();
+    }
+
+    void
+    SliceBody::solve_linear(TrilinosWrappers::MPI::Vector &du)
+    {
+      if (iterative)
+        {
+          // A new hierarchy every Newton step: K and the active set change.
+          block_amg->initialize(system_matrix, preconditioner_matrix);
+          block_amg->solve(system_rhs, du);
+          return;
+        }
+      SolverControl                  control(1, 0);
+      TrilinosWrappers::SolverDirect solver(
+        control,
+        TrilinosWrappers::SolverDirect::AdditionalData(
+          false, parameters.linear_solver.direct_solver));
+      solver.solve(system_matrix, du, system_rhs);
+    }
+  } // namespace three_d
+} // namespace rollnip
