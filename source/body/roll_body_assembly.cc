@@ -236,7 +236,7 @@ namespace rollnip
     auto cell_worker = [&](const CellIterator &cell,
                            AssemblyScratch    &scratch,
                            AssemblyCopy       &copy) {
-      const MaterialLaw<dim> &material = material_table[cell->material_id()];
+      const ScaledLaw<dim> material = material_table.law(*cell);
       scratch.fe_values.reinit(cell);
       copy.reset();
       add_cell_terms(
@@ -398,7 +398,7 @@ namespace rollnip
             block.push_back(dof_indices[a]);
           FullMatrix<double> inverse(n_p, n_p);
           inverse.invert(mass);
-          inverse *= material_table[cell->material_id()].shear_modulus();
+          inverse *= material_table.law(*cell).shear_modulus();
           blocks.push_back(std::move(block));
           inverses.push_back(std::move(inverse));
         }

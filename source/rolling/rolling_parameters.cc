@@ -97,7 +97,7 @@ namespace rollnip
       }
 
       void
-      declare_speed_and_law(ParameterHandler &prm)
+      declare_speed(ParameterHandler &prm)
       {
         declare_documented(prm,
                            "Enabled",
@@ -125,6 +125,12 @@ namespace rollnip
                            "More speeds in Speed unit for the table of "
                            "rolling resistance and temperatures against "
                            "speed (rolling_speeds.csv); empty: none");
+      }
+
+      /// The cover's hysteresis entries (the roll's, the mating roll's).
+      void
+      declare_law(ParameterHandler &prm)
+      {
         declare_documented(prm,
                            "Viscoelastic model",
                            "loss tangent",
@@ -209,8 +215,22 @@ namespace rollnip
     Rolling::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Rolling");
-      declare_speed_and_law(prm);
+      declare_speed(prm);
+      declare_law(prm);
       declare_thermal(prm);
+      ThermalSoftening::declare(prm);
+      prm.enter_subsection("Mating roll");
+      declare_documented(prm,
+                         "Hysteresis",
+                         "as roll",
+                         Patterns::Selection("as roll|own"),
+                         "With Mating roll/Type = covered roll, the mating "
+                         "roll's cover: as roll: the hysteresis and thermal "
+                         "entries of Rolling; own: the entries of this "
+                         "subsection");
+      declare_law(prm);
+      declare_thermal(prm);
+      prm.leave_subsection();
       prm.leave_subsection();
     }
 
@@ -280,7 +300,8 @@ namespace rollnip
     void
     Rolling::parse(ParameterHandler  &prm,
                    const unsigned int n_layers,
-                   const double       contact_speed)
+                   const double       contact_speed,
+                   const unsigned int mate_layers)
     {
       prm.enter_subsection("Rolling");
       enabled             = prm.get_bool("Enabled");
@@ -292,6 +313,16 @@ namespace rollnip
       speeds = {speed};
       for (const double v : numbers_of(prm.get("Speed table"), "Speed table"))
         speeds.push_back(v * factor);
+      parse_cover(prm, n_layers);
+      softening.parse(prm, n_layers);
+      if (mate_layers > 0)
+        parse_mate(prm, mate_layers);
+      prm.leave_subsection();
+    }
+
+    void
+    Rolling::parse_cover(ParameterHandler &prm, const unsigned int n_layers)
+    {
       const std::string m = prm.get("Viscoelastic model");
       model               = m == "prony"          ? ViscoelasticModel::prony
                             : m == "kelvin-voigt" ? ViscoelasticModel::kelvin_voigt
@@ -306,6 +337,32 @@ namespace rollnip
       core_condition      = prm.get("Core thermal condition") == "insulated"
                               ? CoreThermalCondition::insulated
                               : CoreThermalCondition::fixed_temperature;
+    }
+
+    void
+    Rolling::parse_mate(ParameterHandler &prm, const unsigned int n_layers)
+    {
+      prm.enter_subsection("Mating roll");
+      if (prm.get("Hysteresis") == "own")
+        {
+          mate = std::make_shared<Rolling>();
+          mate->parse_cover(prm, n_layers);
+        }
+      else
+        {
+          AssertThrow((layers.size() == 1 || layers.size() == n_layers) &&
+                        (conductivity.size() == 1 ||
+                         conductivity.size() == n_layers),
+                      ExcMessage("Rolling/Mating roll/Hysteresis = as roll: "
+                                 "the roll's per-layer values do not fit the "
+                                 "mating roll's " +
+                                 std::to_string(n_layers) +
+                                 " layers; set Hysteresis = own"));
+          mate = std::make_shared<Rolling>(*this);
+        }
+      mate->enabled = enabled;
+      mate->speed   = speed;
+      mate->speeds  = {speed};
       prm.leave_subsection();
     }
 
@@ -316,10 +373,18 @@ namespace rollnip
         return;
       AssertThrow(scene.contact.mode != ContactMode::none,
                   ExcMessage("Rolling/Enabled needs a nip: set Contact/Mode"));
-      AssertThrow(!scene.mating_roll.covered,
-                  ExcMessage("Rolling/Enabled needs a rigid mating roll "
-                             "(Mating roll/Type = covered roll is not "
-                             "supported)"));
+      AssertThrow(!scene.mating_roll.covered ||
+                    scene.mating_roll.mesh.source == MeshSource::builtin,
+                  ExcMessage("Rolling/Enabled needs Mating roll/Mesh/Source "
+                             "= builtin (the mating roll's loss is "
+                             "integrated along its mesh's circles)"));
+      AssertThrow(!mate || mate->heat_transfer > 0 ||
+                    mate->core_condition ==
+                      CoreThermalCondition::fixed_temperature,
+                  ExcMessage("Rolling/Mating roll/Heat transfer coefficient "
+                             "must be positive with Core thermal condition "
+                             "= insulated (the heat would have no way "
+                             "out)"));
       AssertThrow(scene.mesh.source == MeshSource::builtin,
                   ExcMessage("Rolling/Enabled needs Mesh/Source = builtin "
                              "(the loss is integrated along the mesh's "
@@ -333,6 +398,12 @@ namespace rollnip
                   ExcMessage("Rolling/Heat transfer coefficient must be "
                              "positive with Core thermal condition = "
                              "insulated (the heat would have no way out)"));
+      // The companions solve their nips at the constant modulus.
+      AssertThrow(!softening.active() || (!scene.contact.compare_linear &&
+                                          !scene.accuracy.error_estimate),
+                  ExcMessage("Rolling/Temperature dependence needs "
+                             "Contact/Compare with linear theory = false and "
+                             "Accuracy/Error estimate = false"));
     }
 
     void
@@ -343,7 +414,11 @@ namespace rollnip
       prm.parse_input(filename);
       AllParameters scene;
       scene.parse(prm);
-      parse(prm, scene.material.n_layers(), scene.contact.surface_speed);
+      parse(prm,
+            scene.material.n_layers(),
+            scene.contact.surface_speed,
+            scene.mating_roll.covered ? scene.mating_roll.material.n_layers()
+                                      : 0);
       validate(scene);
     }
   } // namespace Parameters
