@@ -664,6 +664,40 @@ namespace rollnip
       thermal.seconds = clock.wall_time();
     }
 
+    /// The nip of Contact/Values @p target into row.nonlinear, and for a
+    /// cover that softens as it heats its fixed point with the
+    /// temperature (soften_nip()); returns the wall time of the first
+    /// solve [s].
+    double
+    solve_nip(Scene                           &scene,
+              NipControl                      &control,
+              const Parameters::AllParameters &parameters,
+              const Parameters::Rolling       *rolling,
+              const double                     target,
+              NipRow                          &row,
+              ThermalCoupling                 &thermal,
+              CircleFactor                    &circle_factor)
+    {
+      Timer clock;
+      // A softened cover starts each nip at the constant modulus.
+      const bool soften =
+        rolling && rolling->enabled && rolling->softening.active();
+      if (soften)
+        scene.roll().body().materials().set_modulus_factor({});
+      row.nonlinear        = control.solve(target);
+      const double seconds = clock.wall_time();
+      if (row.nonlinear.converged && soften)
+        soften_nip(scene,
+                   control,
+                   parameters,
+                   *rolling,
+                   target,
+                   row,
+                   thermal,
+                   circle_factor);
+      return seconds;
+    }
+
     /// The rolling post-process of the converged nip @p row of @p scene
     /// into @p row.rolling, its files in @p dir (collective); the loss
     /// of each circle times @p circle_factor if given, the fixed point
@@ -843,26 +877,17 @@ namespace rollnip
           const std::string dir = sweep ? top + "/" + nip : top;
           const std::string vtu =
             "/solution-" + Utilities::int_to_string(n + 1, 4) + ".pvtu";
-          NipRow row;
-          Timer  nip_clock;
-          // A softened cover starts each nip at the constant modulus.
-          const bool soften =
-            rolling && rolling->enabled && rolling->softening.active();
-          if (soften)
-            nonlinear.body().materials().set_modulus_factor({});
-          row.nonlinear               = control.solve(values[n]);
-          const double    nip_seconds = nip_clock.wall_time();
+          NipRow          row;
           ThermalCoupling thermal;
           CircleFactor    circle_factor;
-          if (row.nonlinear.converged && soften)
-            soften_nip(scene,
-                       control,
-                       parameters,
-                       *rolling,
-                       values[n],
-                       row,
-                       thermal,
-                       circle_factor);
+          const double    nip_seconds = solve_nip(scene,
+                                               control,
+                                               parameters,
+                                               rolling,
+                                               values[n],
+                                               row,
+                                               thermal,
+                                               circle_factor);
           if (row.nonlinear.converged)
             {
               evaluate_nip(scene, n + 1, row);
@@ -1042,6 +1067,9 @@ namespace rollnip
                              parameters,
                              rolling,
                              rows);
+        // The modulus band is the constant modulus's (the last nip may
+        // have left its cover softened).
+        scene->roll().body().materials().set_modulus_factor({});
         if (failure.empty() && band_by_scaling(parameters))
           band = solve_band_widths(control, rows, parameters);
         if (guard_rails && Utilities::MPI::this_mpi_process(communicator) == 0)
