@@ -276,6 +276,61 @@ namespace rollnip
         }
     }
 
+    /// The covered mating roll's own loss, if there is one.
+    void
+    print_mate_rolling(const std::vector<ReportRow> &rows)
+    {
+      if (!rows[0].rolling.mate.available)
+        return;
+      std::ostream &out = report_stream();
+      out << "Mating roll's cover, same speed (first order):" << std::endl;
+      for (const auto &r : rows)
+        {
+          const MateRolling &m = r.rolling.mate;
+          out << std::setprecision(4) << std::setw(16) << m.rolling_resistance
+              << std::setw(18) << m.power << std::fixed << std::setprecision(2)
+              << std::setw(16) << m.bond_temperature << std::setw(18)
+              << m.surface_temperature << std::setw(15) << m.max_temperature
+              << std::defaultfloat << std::setprecision(3) << std::setw(12)
+              << m.speed_over_nip << std::endl;
+        }
+    }
+
+    /// The fixed point of a cover that softens as it heats, if any: the
+    /// constant-modulus nip beside the softened one.
+    void
+    print_softening(const std::vector<ReportRow> &rows)
+    {
+      if (!rows[0].rolling.thermal.active)
+        return;
+      std::ostream &out = report_stream();
+      out << "Cover softened by its temperature (constant modulus -> fixed "
+             "point):"
+          << std::endl
+          << std::setw(7) << "passes" << std::setw(13) << "contraction"
+          << std::setw(22) << "2b [mm]" << std::setw(24) << "F_r [N/mm]"
+          << std::setw(22) << "T max [degC]" << std::endl;
+      for (const auto &r : rows)
+        {
+          const ThermalCoupling &t = r.rolling.thermal;
+          auto pair = [](const double a, const double b, const int w) {
+            std::ostringstream s;
+            s << std::setprecision(5) << a << " -> " << b;
+            std::ostringstream padded;
+            padded << std::setw(w) << s.str();
+            return padded.str();
+          };
+          out << std::setw(6) << t.iterations << (t.converged ? ' ' : '!')
+              << std::setw(13) << std::setprecision(3) << t.contraction
+              << pair(t.constant_width, t.width, 22)
+              << pair(t.constant_rolling_resistance,
+                      r.rolling.rolling_resistance,
+                      24)
+              << pair(t.constant_max, r.rolling.max_temperature, 22)
+              << std::endl;
+        }
+    }
+
     /// The rolling columns of the report (doc/rolling.md), if computed;
     /// in SI units whatever Output/Units says.
     void
@@ -299,6 +354,8 @@ namespace rollnip
             << r.rolling.max_temperature << std::defaultfloat
             << std::setprecision(3) << std::setw(12) << r.rolling.speed_over_nip
             << std::endl;
+      print_mate_rolling(rows);
+      print_softening(rows);
     }
 
     /// The comparisons at each load, and the widths at the ends of the

@@ -8,6 +8,7 @@
 #include <rollnip/contact/inverse_contact.h>
 #include <rollnip/contact/nip_control.h>
 #include <rollnip/contact/nip_estimates.h>
+#include <rollnip/contact/two_roll_contact.h>
 #include <rollnip/geometry/angles.h>
 #include <rollnip/interrupt.h>
 #include <rollnip/material/hardness.h>
@@ -18,9 +19,11 @@
 #include <rollnip/output/stale_nip_directories.h>
 #include <rollnip/output/sweep_pvd.h>
 #include <rollnip/output/units.h>
+#include <rollnip/rolling/mate_rolling.h>
 #include <rollnip/rolling/rolling_evaluation.h>
 #include <rollnip/rolling/rolling_parameters.h>
 #include <rollnip/rolling/steady_rolling_sweep.h>
+#include <rollnip/rolling/thermal_fixed_point.h>
 #include <rollnip/run_errors.h>
 #include <rollnip/scene/scene_builder.h>
 
@@ -691,26 +694,121 @@ namespace rollnip
       pvd.add(time, nip + "/contact_pressure.vtp", 2);
     }
 
+    /// The nip of Contact/Values @p target of a cover that softens as it
+    /// heats: the fixed point from the converged constant-modulus nip in
+    /// @p row, each pass started from the last nip with @p control's
+    /// slope, on a control of its own (the sweep's keeps the
+    /// constant-modulus nips). Replaces row.nonlinear; the iteration's
+    /// record in @p thermal, the loss factor in @p circle_factor.
+    void
+    soften_nip(Scene                           &scene,
+               NipControl                      &control,
+               const Parameters::AllParameters &parameters,
+               const Parameters::Rolling       &rolling,
+               const double                     target,
+               NipRow                          &row,
+               ThermalCoupling                 &thermal,
+               CircleFactor                    &circle_factor)
+    {
+      Timer        clock;
+      const double slope   = control.local_slope(target);
+      auto         resolve = [&](const ContactResult &last) {
+        NipControl pass(scene.nip_solver(), parameters);
+        return pass.solve(target, last.theta0, slope);
+      };
+      row.nonlinear   = soften_to_fixed_point(scene.roll().body(),
+                                            row.nonlinear,
+                                            rolling,
+                                            resolve,
+                                            thermal,
+                                            circle_factor);
+      thermal.seconds = clock.wall_time();
+    }
+
+    /// The nip of Contact/Values @p target into row.nonlinear, and for a
+    /// cover that softens as it heats its fixed point with the
+    /// temperature (soften_nip()); returns the wall time of the first
+    /// solve [s].
+    double
+    solve_nip(Scene                           &scene,
+              NipControl                      &control,
+              const Parameters::AllParameters &parameters,
+              const Parameters::Rolling       *rolling,
+              const double                     target,
+              NipRow                          &row,
+              ThermalCoupling                 &thermal,
+              CircleFactor                    &circle_factor)
+    {
+      Timer clock;
+      // A softened cover starts each nip at the constant modulus.
+      const bool soften =
+        rolling && rolling->enabled && rolling->softening.active();
+      if (soften)
+        scene.roll().body().materials().set_modulus_factor({});
+      row.nonlinear        = control.solve(target);
+      const double seconds = clock.wall_time();
+      if (row.nonlinear.converged && soften)
+        soften_nip(scene,
+                   control,
+                   parameters,
+                   *rolling,
+                   target,
+                   row,
+                   thermal,
+                   circle_factor);
+      return seconds;
+    }
+
+    /// The first-order loss of the covered mating roll's own cover in
+    /// @p row, printed on the screen.
+    void
+    report_mate_rolling(const Scene               &scene,
+                        const Parameters::Rolling &mate,
+                        NipRow                    &row)
+    {
+      const auto &two =
+        dynamic_cast<const TwoRollContact &>(scene.nip_solver());
+      row.rolling.mate     = evaluate_mate_rolling(two.mating_roll().body(),
+                                               mate,
+                                               row.nonlinear.half_chord);
+      const MateRolling &m = row.rolling.mate;
+      if (Utilities::MPI::this_mpi_process(two.communicator()) == 0)
+        std::cout << std::setprecision(4)
+                  << "Mating roll's cover (first order): F_r "
+                  << m.rolling_resistance << " N/mm, heat " << m.power
+                  << " W/m; temperature: bond " << m.bond_temperature
+                  << " degC, surface " << m.surface_temperature << " degC, max "
+                  << m.max_temperature << " degC" << std::endl;
+    }
+
     /// The rolling post-process of the converged nip @p row of @p scene
-    /// into @p row.rolling, its files in @p dir (collective).
+    /// into @p row.rolling, its files in @p dir (collective); the loss
+    /// of each circle times @p circle_factor if given, the fixed point
+    /// with the temperature @p thermal.
     void
     evaluate_rolling_nip(Scene                           &scene,
                          const Parameters::AllParameters &parameters,
                          const Parameters::Rolling       &rolling,
                          const std::string               &dir,
+                         const ThermalCoupling           &thermal,
+                         const CircleFactor              &circle_factor,
                          NipRow                          &row)
     {
       const MPI_Comm comm = scene.roll().communicator();
       if (Utilities::MPI::this_mpi_process(comm) == 0)
         make_directories(dir);
       MPI_Barrier(comm);
-      row.rolling = evaluate_rolling(scene.roll().body(),
+      row.rolling         = evaluate_rolling(scene.roll().body(),
                                      row.nonlinear,
                                      rolling,
                                      parameters.contact.indenter_radius,
                                      dir,
                                      parameters.output.write_csv,
-                                     parameters.output.write_vtu);
+                                     parameters.output.write_vtu,
+                                     circle_factor);
+      row.rolling.thermal = thermal;
+      if (rolling.mate && scene.description.covered_mate())
+        report_mate_rolling(scene, *rolling.mate, row);
       if (rolling.full_steady && Utilities::MPI::this_mpi_process(comm) == 0)
         {
           const auto rows = steady_rolling_sweep(
@@ -801,7 +899,8 @@ namespace rollnip
       // cost of the rolling loss (benchmarks/rolling_cost.sh).
       const std::string rolling_text =
         row.rolling.available
-          ? rolling_lines(row.rolling) +
+          ? rolling_lines(row.rolling) + thermal_lines(row.rolling) +
+              mate_rolling_lines(row.rolling) +
               "nip_solve_wall_time_s = " + std::to_string(nip_seconds) + '\n'
           : "";
       write_nip(nonlinear,
@@ -856,10 +955,17 @@ namespace rollnip
           const std::string dir = sweep ? top + "/" + nip : top;
           const std::string vtu =
             "/solution-" + Utilities::int_to_string(n + 1, 4) + ".pvtu";
-          NipRow row;
-          Timer  nip_clock;
-          row.nonlinear            = control.solve(values[n]);
-          const double nip_seconds = nip_clock.wall_time();
+          NipRow          row;
+          ThermalCoupling thermal;
+          CircleFactor    circle_factor;
+          const double    nip_seconds = solve_nip(scene,
+                                               control,
+                                               parameters,
+                                               rolling,
+                                               values[n],
+                                               row,
+                                               thermal,
+                                               circle_factor);
           if (row.nonlinear.converged)
             {
               evaluate_nip(scene, n + 1, row);
@@ -870,7 +976,13 @@ namespace rollnip
                   print_error_estimate(row, n + 1, nonlinear.communicator());
                 }
               if (rolling && rolling->enabled)
-                evaluate_rolling_nip(scene, parameters, *rolling, dir, row);
+                evaluate_rolling_nip(scene,
+                                     parameters,
+                                     *rolling,
+                                     dir,
+                                     thermal,
+                                     circle_factor,
+                                     row);
             }
           write_nip_files(scene, parameters, row, n + 1, dir, nip_seconds);
           if (series && row.nonlinear.converged)
@@ -1033,6 +1145,9 @@ namespace rollnip
                              parameters,
                              rolling,
                              rows);
+        // The modulus band is the constant modulus's (the last nip may
+        // have left its cover softened).
+        scene->roll().body().materials().set_modulus_factor({});
         if (failure.empty() && band_by_scaling(parameters))
           band = solve_band_widths(control, rows, parameters);
         if (guard_rails && Utilities::MPI::this_mpi_process(communicator) == 0)

@@ -254,7 +254,7 @@ namespace rollnip
     auto cell_worker = [&](const CellIterator &cell,
                            AssemblyScratch    &scratch,
                            AssemblyCopy       &copy) {
-      const MaterialLaw<dim> &material = material_table[cell->material_id()];
+      const ScaledLaw<dim> material = material_table.law(*cell);
       scratch.fe_values.reinit(cell);
       copy.reset();
       add_cell_terms(
@@ -416,7 +416,7 @@ namespace rollnip
             block.push_back(dof_indices[a]);
           FullMatrix<double> inverse(n_p, n_p);
           inverse.invert(mass);
-          inverse *= schur_scale(material_table[cell->material_id()]);
+          inverse *= schur_scale(material_table.law(*cell));
           blocks.push_back(std::move(block));
           inverses.push_back(std::move(inverse));
         }

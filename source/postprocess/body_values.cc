@@ -172,7 +172,7 @@ namespace rollnip
                 {
                   const Point<dim> &X = fv.quadrature_point(v);
                   const StressState s = evaluate_stress_state(body.materials(),
-                                                              own,
+                                                              *cell,
                                                               values.grad_u[v],
                                                               values.q[v],
                                                               X,
@@ -296,7 +296,7 @@ namespace rollnip
                 const Point<dim> &X     = fv.quadrature_point(v);
                 const double      theta = reference_angle(X);
                 const StressState s = evaluate_stress_state(body.materials(),
-                                                            cell->material_id(),
+                                                            *cell,
                                                             values.grad_u[v],
                                                             values.q[v],
                                                             X,
@@ -369,7 +369,7 @@ namespace rollnip
             {
               const StressState s =
                 evaluate_stress_state(body.materials(),
-                                      cell->material_id(),
+                                      *cell,
                                       gq[k],
                                       qq[k],
                                       fe_values.quadrature_point(k),

@@ -203,8 +203,7 @@ namespace rollnip
                                                          grad_u);
           fe_values[pressure_unknown].get_function_values(body.solution(),
                                                           q_values);
-          const MaterialLaw<dim> &material =
-            body.materials()[cell->material_id()];
+          const ScaledLaw<dim> material = body.materials().law(*cell);
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
               const Tensor<2, dim> P =

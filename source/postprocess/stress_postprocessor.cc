@@ -59,8 +59,7 @@ namespace rollnip
     const DataPostprocessorInputs::Vector<dim> &inputs,
     std::vector<Vector<double>>                &computed) const
   {
-    const types::material_id id =
-      inputs.template get_cell<dim>()->material_id();
+    const auto cell = inputs.template get_cell<dim>();
     for (unsigned int p = 0; p < inputs.solution_values.size(); ++p)
       {
         Tensor<2, dim> grad_u;
@@ -72,7 +71,7 @@ namespace rollnip
           }
         const StressState s =
           evaluate_stress_state(materials,
-                                id,
+                                *cell,
                                 grad_u,
                                 inputs.solution_values[p][dim],
                                 inputs.evaluation_points[p],

@@ -48,11 +48,13 @@ namespace rollnip
   } // namespace
 
   RollingLoss
-  first_order_loss(const std::vector<MaterialCircle> &circles,
-                   const Parameters::Rolling         &rolling,
-                   const double                       R0,
-                   const double                       sector_angle,
-                   const double                       speed)
+  first_order_loss(
+    const std::vector<MaterialCircle>                 &circles,
+    const Parameters::Rolling                         &rolling,
+    const double                                       R0,
+    const double                                       sector_angle,
+    const double                                       speed,
+    const std::function<double(double, unsigned int)> &circle_factor)
   {
     RollingLoss loss;
     loss.speed          = speed;
@@ -72,7 +74,9 @@ namespace rollnip
             total += p;
             peak = std::max(peak, p / (turn[k].theta - turn[k - 1].theta));
           }
-        const double factor = Omega * Omega * tau;
+        const double factor =
+          Omega * Omega * tau *
+          (circle_factor ? circle_factor(circle.radius, circle.layer) : 1.);
         loss.power += circle.weight * factor * total;
         loss.circles.push_back({circle.radius,
                                 circle.weight,

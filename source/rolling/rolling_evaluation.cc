@@ -208,13 +208,15 @@ namespace rollnip
   } // namespace
 
   RollingNumbers
-  evaluate_rolling(const RollBody            &body,
-                   const ContactResult       &nip,
-                   const Parameters::Rolling &rolling,
-                   const double               indenter_radius,
-                   const std::string         &directory,
-                   const bool                 write_csv,
-                   const bool                 write_vtu)
+  evaluate_rolling(
+    const RollBody                                    &body,
+    const ContactResult                               &nip,
+    const Parameters::Rolling                         &rolling,
+    const double                                       indenter_radius,
+    const std::string                                 &directory,
+    const bool                                         write_csv,
+    const bool                                         write_vtu,
+    const std::function<double(double, unsigned int)> &circle_factor)
   {
     const bool root =
       Utilities::MPI::this_mpi_process(body.communicator()) == 0;
@@ -224,10 +226,13 @@ namespace rollnip
     const auto            circles = cover_circles(body);
     std::vector<SpeedRow> rows;
     for (const double v : rolling.speeds)
-      rows.push_back(
-        {first_order_loss(
-           circles, rolling, geometry.outer_radius, geometry.sector_angle, v),
-         {}});
+      rows.push_back({first_order_loss(circles,
+                                       rolling,
+                                       geometry.outer_radius,
+                                       geometry.sector_angle,
+                                       v,
+                                       circle_factor),
+                      {}});
     RollingNumbers n;
     n.loss_seconds = clock.wall_time();
     clock.restart();

@@ -97,7 +97,7 @@ namespace rollnip
       }
 
       void
-      declare_speed_and_law(ParameterHandler &prm)
+      declare_speed(ParameterHandler &prm)
       {
         declare_documented(prm,
                            "Enabled",
@@ -152,6 +152,12 @@ namespace rollnip
                            "16",
                            Patterns::Integer(1),
                            "Radial cells of the full steady rolling's mesh");
+      }
+
+      /// The cover's hysteresis entries (the roll's, the mating roll's).
+      void
+      declare_law(ParameterHandler &prm)
+      {
         declare_documented(prm,
                            "Viscoelastic model",
                            "loss tangent",
@@ -236,8 +242,22 @@ namespace rollnip
     Rolling::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Rolling");
-      declare_speed_and_law(prm);
+      declare_speed(prm);
+      declare_law(prm);
       declare_thermal(prm);
+      ThermalSoftening::declare(prm);
+      prm.enter_subsection("Mating roll");
+      declare_documented(prm,
+                         "Hysteresis",
+                         "as roll",
+                         Patterns::Selection("as roll|own"),
+                         "With Mating roll/Type = covered roll, the mating "
+                         "roll's cover: as roll: the hysteresis and thermal "
+                         "entries of Rolling; own: the entries of this "
+                         "subsection");
+      declare_law(prm);
+      declare_thermal(prm);
+      prm.leave_subsection();
       prm.leave_subsection();
     }
 
@@ -307,7 +327,8 @@ namespace rollnip
     void
     Rolling::parse(ParameterHandler  &prm,
                    const unsigned int n_layers,
-                   const double       contact_speed)
+                   const double       contact_speed,
+                   const unsigned int mate_layers)
     {
       prm.enter_subsection("Rolling");
       enabled             = prm.get_bool("Enabled");
@@ -332,8 +353,18 @@ namespace rollnip
       AssertThrow(std::is_sorted(full_speeds.begin(), full_speeds.end()),
                   ExcMessage("Rolling/Full rolling speeds: the speeds must "
                              "be ascending (a continuation in speed)"));
-      full_nip_cells      = prm.get_integer("Full rolling nip cells");
-      full_radial_cells   = prm.get_integer("Full rolling radial cells");
+      full_nip_cells    = prm.get_integer("Full rolling nip cells");
+      full_radial_cells = prm.get_integer("Full rolling radial cells");
+      parse_cover(prm, n_layers);
+      softening.parse(prm, n_layers);
+      if (mate_layers > 0)
+        parse_mate(prm, mate_layers);
+      prm.leave_subsection();
+    }
+
+    void
+    Rolling::parse_cover(ParameterHandler &prm, const unsigned int n_layers)
+    {
       const std::string m = prm.get("Viscoelastic model");
       model               = m == "prony"          ? ViscoelasticModel::prony
                             : m == "kelvin-voigt" ? ViscoelasticModel::kelvin_voigt
@@ -348,6 +379,32 @@ namespace rollnip
       core_condition      = prm.get("Core thermal condition") == "insulated"
                               ? CoreThermalCondition::insulated
                               : CoreThermalCondition::fixed_temperature;
+    }
+
+    void
+    Rolling::parse_mate(ParameterHandler &prm, const unsigned int n_layers)
+    {
+      prm.enter_subsection("Mating roll");
+      if (prm.get("Hysteresis") == "own")
+        {
+          mate = std::make_shared<Rolling>();
+          mate->parse_cover(prm, n_layers);
+        }
+      else
+        {
+          AssertThrow((layers.size() == 1 || layers.size() == n_layers) &&
+                        (conductivity.size() == 1 ||
+                         conductivity.size() == n_layers),
+                      ExcMessage("Rolling/Mating roll/Hysteresis = as roll: "
+                                 "the roll's per-layer values do not fit the "
+                                 "mating roll's " +
+                                 std::to_string(n_layers) +
+                                 " layers; set Hysteresis = own"));
+          mate = std::make_shared<Rolling>(*this);
+        }
+      mate->enabled = enabled;
+      mate->speed   = speed;
+      mate->speeds  = {speed};
       prm.leave_subsection();
     }
 
@@ -358,10 +415,18 @@ namespace rollnip
         return;
       AssertThrow(scene.contact.mode != ContactMode::none,
                   ExcMessage("Rolling/Enabled needs a nip: set Contact/Mode"));
-      AssertThrow(!scene.mating_roll.covered,
-                  ExcMessage("Rolling/Enabled needs a rigid mating roll "
-                             "(Mating roll/Type = covered roll is not "
-                             "supported)"));
+      AssertThrow(!scene.mating_roll.covered ||
+                    scene.mating_roll.mesh.source == MeshSource::builtin,
+                  ExcMessage("Rolling/Enabled needs Mating roll/Mesh/Source "
+                             "= builtin (the mating roll's loss is "
+                             "integrated along its mesh's circles)"));
+      AssertThrow(!mate || mate->heat_transfer > 0 ||
+                    mate->core_condition ==
+                      CoreThermalCondition::fixed_temperature,
+                  ExcMessage("Rolling/Mating roll/Heat transfer coefficient "
+                             "must be positive with Core thermal condition "
+                             "= insulated (the heat would have no way "
+                             "out)"));
       AssertThrow(scene.mesh.source == MeshSource::builtin,
                   ExcMessage("Rolling/Enabled needs Mesh/Source = builtin "
                              "(the loss is integrated along the mesh's "
@@ -380,6 +445,12 @@ namespace rollnip
                              "Rolling/Viscoelastic model = prony (a "
                              "Kelvin-Voigt dashpot or a loss tangent is not "
                              "a Maxwell branch)"));
+      // The companions solve their nips at the constant modulus.
+      AssertThrow(!softening.active() || (!scene.contact.compare_linear &&
+                                          !scene.accuracy.error_estimate),
+                  ExcMessage("Rolling/Temperature dependence needs "
+                             "Contact/Compare with linear theory = false and "
+                             "Accuracy/Error estimate = false"));
     }
 
     void
@@ -390,7 +461,11 @@ namespace rollnip
       prm.parse_input(filename);
       AllParameters scene;
       scene.parse(prm);
-      parse(prm, scene.material.n_layers(), scene.contact.surface_speed);
+      parse(prm,
+            scene.material.n_layers(),
+            scene.contact.surface_speed,
+            scene.mating_roll.covered ? scene.mating_roll.material.n_layers()
+                                      : 0);
       validate(scene);
     }
   } // namespace Parameters

@@ -1,4 +1,4 @@
-// The cover's steady temperature (doc/rolling.md, section 5) against the
+// The cover's steady temperature (doc/rolling.md, section 4) against the
 // closed forms of an annulus R1 < r < R0 with a uniform source s and
 // conductivity k, -k (r T')' / r = s:
 //  A. core held at T_c, surface insulated:

@@ -186,6 +186,12 @@ namespace rollnip
     {
       return material_table;
     }
+    /// The laws, to set a modulus factor (a softened cover) before a solve.
+    MaterialTable &
+    materials()
+    {
+      return material_table;
+    }
     const AffineConstraints<double> &
     constraints() const
     {

@@ -37,6 +37,16 @@ namespace rollnip
                         const Point<dim>        &X,
                         const Tensor<1, dim>    &u);
 
+  /// The same in @p cell, whose law is MaterialTable::law() (its layer's,
+  /// scaled by the modulus factor if one is set).
+  StressState
+  evaluate_stress_state(const MaterialTable          &materials,
+                        const CellAccessor<dim, dim> &cell,
+                        const Tensor<2, dim>         &grad_u,
+                        const double                  q,
+                        const Point<dim>             &X,
+                        const Tensor<1, dim>         &u);
+
   /// Polar components (rr, tt, rt) of a symmetric tensor at angle phi.
   void
   polar_components(const SymmetricTensor<2, dim> &s,

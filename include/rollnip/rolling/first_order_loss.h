@@ -4,6 +4,7 @@
 #include <rollnip/rolling/cover_circles.h>
 #include <rollnip/rolling/rolling_parameters.h>
 
+#include <functional>
 #include <vector>
 
 namespace rollnip
@@ -38,14 +39,18 @@ namespace rollnip
    * integrated over the whole turn (the model's half mirrored about the
    * line of centres, a half-roll sector closed across theta = 180 deg; on
    * a smaller sector the cover beyond it is taken as unstrained). The
-   * power is the area integral of D over the cross-section.
+   * power is the area integral of D over the cross-section. A
+   * @p circle_factor(r, layer), if given, multiplies the loss of each
+   * circle (a cover whose modulus and times vary with its temperature).
    */
   RollingLoss
-  first_order_loss(const std::vector<MaterialCircle> &circles,
-                   const Parameters::Rolling         &rolling,
-                   const double                       R0,
-                   const double                       sector_angle,
-                   const double                       speed);
+  first_order_loss(
+    const std::vector<MaterialCircle>                 &circles,
+    const Parameters::Rolling                         &rolling,
+    const double                                       R0,
+    const double                                       sector_angle,
+    const double                                       speed,
+    const std::function<double(double, unsigned int)> &circle_factor = {});
 } // namespace rollnip
 
 #endif

@@ -28,16 +28,19 @@ namespace rollnip
    * and writes rolling_profile.csv (dissipation and temperature over the
    * cover's thickness) and rolling_speeds.csv to @p directory if
    * @p write_csv, temperature.pvtu if @p write_vtu. @p indenter_radius
-   * [mm] (inf: flat) is for the linear estimate; 0: none.
+   * [mm] (inf: flat) is for the linear estimate; 0: none. @p circle_factor
+   * as for first_order_loss().
    */
   RollingNumbers
-  evaluate_rolling(const RollBody            &body,
-                   const ContactResult       &nip,
-                   const Parameters::Rolling &rolling,
-                   const double               indenter_radius,
-                   const std::string         &directory,
-                   const bool                 write_csv,
-                   const bool                 write_vtu);
+  evaluate_rolling(
+    const RollBody                                    &body,
+    const ContactResult                               &nip,
+    const Parameters::Rolling                         &rolling,
+    const double                                       indenter_radius,
+    const std::string                                 &directory,
+    const bool                                         write_csv,
+    const bool                                         write_vtu,
+    const std::function<double(double, unsigned int)> &circle_factor = {});
 
   /// The key = value lines of @p r for contact.txt and summary.txt.
   std::string

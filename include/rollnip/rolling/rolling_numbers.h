@@ -1,10 +1,25 @@
 #ifndef rollnip_rolling_rolling_numbers_h
 #define rollnip_rolling_rolling_numbers_h
 
+#include <rollnip/rolling/thermal_softening.h>
+
 #include <limits>
 
 namespace rollnip
 {
+  /// The covered mating roll's own loss and temperature at the same
+  /// surface speed (doc/rolling.md), in the engineer's units.
+  struct MateRolling
+  {
+    bool   available          = false;
+    double rolling_resistance = 0; ///< its loss / V [N/mm]
+    double power              = 0; ///< dissipated in its cover [W/m]
+    double bond_temperature = 0, surface_temperature = 0,
+           max_temperature = 0;                                   ///< [degC]
+    double heat_generated = 0, heat_to_air = 0, heat_to_core = 0; ///< [W/m]
+    double speed_over_nip = 0; ///< V tau / b with its longest time
+  };
+
   /// What the rolling post-process reports of one nip at Rolling/Surface
   /// speed (doc/rolling.md), in the engineer's units.
   struct RollingNumbers
@@ -28,6 +43,11 @@ namespace rollnip
     /// Wall times [s]: the loss (sampling the circles, all speeds), the
     /// temperatures (all speeds).
     double loss_seconds = 0, heat_seconds = 0;
+    /// The fixed point with the cover's temperature, if its modulus or
+    /// times depend on it.
+    ThermalCoupling thermal;
+    /// The covered mating roll's own loss, if there is one.
+    MateRolling mate;
   };
 } // namespace rollnip
 

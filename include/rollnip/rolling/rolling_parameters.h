@@ -4,7 +4,9 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <rollnip/global.h>
+#include <rollnip/rolling/thermal_softening.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -69,6 +71,11 @@ namespace rollnip
       double               core          = 20; ///< [degC]
       CoreThermalCondition core_condition =
         CoreThermalCondition::fixed_temperature;
+      /// The cover's modulus and times against its temperature.
+      ThermalSoftening softening;
+      /// The covered mating roll's cover (subsection Rolling/Mating roll),
+      /// at the same surface speed; none for a rigid mate.
+      std::shared_ptr<Rolling> mate;
 
       /// The full steady rolling of each nip (doc/rolling.md, section 7):
       /// on, its speeds [m/s] (ascending; empty: speeds) and its mesh.
@@ -81,11 +88,20 @@ namespace rollnip
       /// Reads the subsection; @p n_layers is the cover's number of layers
       /// (one value of a per-layer entry applies to all of them),
       /// @p contact_speed Contact/Surface speed [m/min], taken when
-      /// Rolling/Surface speed is 0.
+      /// Rolling/Surface speed is 0; @p mate_layers the covered mating
+      /// roll's layers (0: a rigid mate, Rolling/Mating roll not read).
       void
       parse(ParameterHandler  &prm,
             const unsigned int n_layers,
-            const double       contact_speed);
+            const double       contact_speed,
+            const unsigned int mate_layers = 0);
+      /// The cover's hysteresis and thermal entries of the current
+      /// subsection.
+      void
+      parse_cover(ParameterHandler &prm, const unsigned int n_layers);
+      /// Rolling/Mating roll (from within Rolling) into mate.
+      void
+      parse_mate(ParameterHandler &prm, const unsigned int n_layers);
       /// Relations to the rest of the scene @p scene; throws naming the
       /// entry.
       void
