@@ -15,6 +15,12 @@
 #   heat s   rolling_temperature_wall_time_s: the cover's temperature,
 #            one conduction solve per speed (5)
 #   ratio    (loss s + heat s) / nip s
+#
+# Then the full steady rolling (parameters/rolling_full.prm, its own
+# whole-circle mesh, the nip at level 1), one row per speed from
+# rolling_full.csv: V tau / b, the fixed-point iterations and the CPU time
+# of that speed's solve (speed 0: the elastic whole-circle nip), beside the
+# CPU time of the nip it starts from.
 set -euo pipefail
 
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -61,3 +67,25 @@ PRM
       -v h="$heat" -v f="$fr" \
       'BEGIN { printf "%-7s %5d %7d %9.3f %9.4f %9.4f %8.4f %7.4f\n", e, l, n, a, b, h, (b + h) / a, f }'
 done
+
+echo
+echo "Full steady rolling, parameters/rolling_full.prm (nip at level 1):"
+prm="$work/full.prm"
+cp "$repo_root/parameters/rolling_full.prm" "$prm"
+cat >> "$prm" <<PRM
+subsection Mesh
+  set Global refinements = 1
+end
+subsection Output
+  set Directory = $work/full
+  set Write VTU = false
+end
+PRM
+"$rollnip" "$prm" > "$work/full_log.txt" 2>&1 ||
+  { cat "$work/full_log.txt" >&2; echo "rolling_cost: error: full rolling run failed" >&2; exit 1; }
+echo "nip solve: $(value "$work/full/contact.txt" nip_solve_wall_time_s) s wall"
+awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i
+                   printf "%10s %10s %10s %8s %10s\n", "V m/min", "V tau/b", "F_r N/mm", "iters", "CPU s" }
+         NR > 1 { printf "%10g %10.4g %10.4g %8d %10.2f\n", $c["speed_m_per_min"], $c["V_tau_over_b"],
+                  $c["F_r_energy_N_per_mm"], $c["fixed_point_iterations"], $c["cpu_time_s"] }' \
+  "$work/full/rolling_full.csv"

@@ -762,7 +762,7 @@ namespace rollnip
     /// The first-order loss of the covered mating roll's own cover in
     /// @p row, printed on the screen.
     void
-    report_mate_rolling(const Scene               &scene,
+    report_mate_rolling(Scene                     &scene,
                         const Parameters::Rolling &mate,
                         NipRow                    &row)
     {

@@ -75,15 +75,6 @@ namespace rollnip
       return (3. * K - 2. * G) / (2. * (3. * K + G));
     }
 
-    bool
-    any_compressible(const Parameters::Material &material)
-    {
-      for (unsigned int j = 0; j < material.n_layers(); ++j)
-        if (!std::isinf(bulk_modulus(material, j)))
-          return true;
-      return false;
-    }
-
     namespace
     {
       void

@@ -1,3 +1,5 @@
+#include <deal.II/base/timer.h>
+
 #include <rollnip/geometry/cover_layers.h>
 #include <rollnip/output/atomic_file.h>
 #include <rollnip/rolling/first_order_loss.h>
@@ -54,19 +56,23 @@ namespace rollnip
   {
     SteadyRolling                 model(scene);
     std::vector<SteadyRollingRow> rows;
+    Timer                         timer;
     AssertThrow(model.solve_elastic(u0, 4),
                 ExcMessage("Full steady rolling: the elastic whole-circle "
                            "nip did not converge"));
-    const auto   circles = model.circles();
-    const auto   still   = model.result();
-    const double R0      = scene.layout.layer_radii.back();
-    double       tau     = 0;
+    const double elastic_time = timer.cpu_time();
+    const auto   circles      = model.circles();
+    const auto   still        = model.result();
+    const double R0           = scene.layout.layer_radii.back();
+    double       tau          = 0;
     for (const auto &layer : rolling.layers)
       tau = std::max(tau, layer.longest_time());
     for (const double V : rolling.full_speeds)
       {
         SteadyRollingRow row;
+        timer.restart();
         row.full.converged = V == 0 ? true : model.solve_speed(V);
+        row.cpu_time       = V == 0 ? elastic_time : timer.cpu_time();
         if (row.full.converged)
           row.full = V == 0 ? still : model.result();
         row.full.speed     = V;
@@ -101,7 +107,7 @@ namespace rollnip
              "F_r_first_order_N_per_mm,full_over_first_order,theta_in_deg,"
              "theta_out_deg,nip_shift_deg,peak_pressure_MPa,"
              "peak_position_deg,power_W_per_m,fixed_point_iterations,"
-             "converged\n"
+             "converged,cpu_time_s\n"
           << std::setprecision(8);
       for (const auto &row : rows)
         {
@@ -114,8 +120,8 @@ namespace rollnip
               << ',' << r.theta_in * deg << ',' << r.theta_out * deg << ','
               << r.pressure_centre * deg << ',' << r.peak_pressure << ','
               << r.peak_position * deg << ',' << r.power << ','
-              << r.fixed_point_iterations << ',' << (r.converged ? 1 : 0)
-              << '\n';
+              << r.fixed_point_iterations << ',' << (r.converged ? 1 : 0) << ','
+              << row.cpu_time << '\n';
         }
     });
     write_atomically(directory + "/rolling_full_pressure.csv",

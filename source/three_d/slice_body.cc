@@ -76,6 +76,55 @@ namespace rollnip
                 augmented(i, j) = K(i, j);
           }
       }
+      /// Adds the cell's tangent @p K and residual @p R of the mixed (u, q)
+      /// form with @p law at the quadrature points of @p fv, where u has
+      /// the gradients @p grad_u and q the values @p q; c(F, q) = J - 1 -
+      /// q/kappa gives the pressure block -M_p/kappa. Returns the integral
+      /// of c over the cell and the cell's volume.
+      std::pair<double, double>
+      add_cell_terms(const FEValues<dim>               &fv,
+                     const MaterialLaw<dim>            &law,
+                     const std::vector<Tensor<2, dim>> &grad_u,
+                     const std::vector<double>         &q,
+                     FullMatrix<double>                &K,
+                     Vector<double>                    &R)
+      {
+        const FEValuesExtractors::Vector u_ex(0);
+        const FEValuesExtractors::Scalar q_ex(dim);
+        const unsigned int               n = K.m();
+        std::vector<Tensor<2, dim>>      grad_phi(n), dP(n);
+        std::vector<double>              psi(n);
+        const double                     compliance = law.pressure_compliance();
+        double                           cell_constraint = 0, cell_volume = 0;
+        for (unsigned int k = 0; k < grad_u.size(); ++k)
+          {
+            const Tensor<2, dim> F   = unit_symmetric_tensor<dim>() + grad_u[k];
+            const Tensor<2, dim> P   = law.piola(F, q[k]);
+            const Tensor<2, dim> cof = law.pressure_direction(F);
+            const double         g   = law.constraint(F) - compliance * q[k];
+            const double         dx  = fv.JxW(k);
+            cell_constraint += g * dx;
+            cell_volume += dx;
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                grad_phi[i] = fv[u_ex].gradient(i, k);
+                psi[i]      = fv[q_ex].value(i, k);
+                dP[i]       = law.piola_derivative(F, q[k], grad_phi[i]);
+              }
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                R(i) += (scalar_product(P, grad_phi[i]) + psi[i] * g) * dx;
+                const double cof_i = scalar_product(cof, grad_phi[i]);
+                for (unsigned int j = 0; j < n; ++j)
+                  K(i, j) +=
+                    (scalar_product(dP[j], grad_phi[i]) + psi[j] * cof_i +
+                     psi[i] * scalar_product(cof, grad_phi[j]) -
+                     compliance * psi[i] * psi[j]) *
+                    dx;
+              }
+          }
+        return {cell_constraint, cell_volume};
+      }
     } // namespace
 
     SliceBody::SliceBody(const Parameters::AllParameters &parameters,
@@ -210,11 +259,7 @@ namespace rollnip
       std::vector<types::global_dof_index> dofs(n);
       std::vector<Tensor<2, dim>>          grad_u(quadrature.size());
       std::vector<double>                  q(quadrature.size());
-      std::vector<Tensor<2, dim>>          grad_phi(n), dP(n);
-      std::vector<double>                  psi(n);
       double                               constraint_error = 0;
-      // c(F, q) = J - 1 - q/kappa: the pressure block -M_p/kappa.
-      const double compliance = law->pressure_compliance();
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
@@ -223,37 +268,8 @@ namespace rollnip
             R = 0;
             fv[u_ex].get_function_gradients(solution, grad_u);
             fv[q_ex].get_function_values(solution, q);
-            double cell_constraint = 0, cell_volume = 0;
-            for (unsigned int k = 0; k < quadrature.size(); ++k)
-              {
-                const Tensor<2, dim> F =
-                  unit_symmetric_tensor<dim>() + grad_u[k];
-                const Tensor<2, dim> P   = law->piola(F, q[k]);
-                const Tensor<2, dim> cof = law->pressure_direction(F);
-                const double         g = law->constraint(F) - compliance * q[k];
-                const double         dx = fv.JxW(k);
-                cell_constraint += g * dx;
-                cell_volume += dx;
-                for (unsigned int i = 0; i < n; ++i)
-                  {
-                    grad_phi[i] = fv[u_ex].gradient(i, k);
-                    psi[i]      = fv[q_ex].value(i, k);
-                    dP[i]       = law->piola_derivative(F, q[k], grad_phi[i]);
-                  }
-                for (unsigned int i = 0; i < n; ++i)
-                  {
-                    R(i) += (scalar_product(P, grad_phi[i]) + psi[i] * g) * dx;
-                    const double cof_i = scalar_product(cof, grad_phi[i]);
-                    for (unsigned int j = 0; j < n; ++j)
-                      K(i, j) +=
-                        (scalar_product(dP[j], grad_phi[i]) + psi[j] * cof_i +
-                         psi[i] * scalar_product(cof, grad_phi[j])) *
-                        dx;
-                    if (compliance != 0)
-                      for (unsigned int j = 0; j < n; ++j)
-                        K(i, j) -= compliance * psi[i] * psi[j] * dx;
-                  }
-              }
+            const auto [cell_constraint, cell_volume] =
+              add_cell_terms(fv, *law, grad_u, q, K, R);
             constraint_error += std::abs(cell_constraint);
             cell->get_dof_indices(dofs);
             // The displacement rows only: reactions and their norm.

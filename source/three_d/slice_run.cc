@@ -66,6 +66,32 @@ namespace rollnip
           three_d::write_free_end_summary(out, *free_end);
       });
     }
+    /// The screen line of one solved nip.
+    void
+    print_nip(const three_d::SliceNip &nip, const double seconds)
+    {
+      std::cout << "  u0 = " << nip.u0 << " mm: P = " << nip.P
+                << " N/mm, b = " << nip.half_chord << " mm, "
+                << nip.active_nodes << " active nodes, " << nip.newton_steps
+                << " Newton steps, "
+                << (nip.linear_iterations > 0
+                      ? std::to_string(nip.linear_iterations) +
+                          " GMRES iterations, "
+                      : std::string())
+                << seconds << " s" << std::endl;
+    }
+
+    /// The line load q(z) [N/mm] at the node planes along the axis.
+    template <typename Profile>
+    void
+    write_line_load(const std::string &path, const Profile &profile)
+    {
+      write_atomically(path, [&](std::ostream &out) {
+        out << std::setprecision(10) << "z_mm,line_load_N_per_mm\n";
+        for (const auto &[z, q] : profile)
+          out << z << ',' << q << '\n';
+      });
+    }
   } // namespace
 
   int
@@ -115,15 +141,7 @@ namespace rollnip
         const double u0 = nips.back().u0;
         seconds.push_back(timer.wall_time());
         if (root)
-          std::cout << "  u0 = " << u0 << " mm: P = " << nips.back().P
-                    << " N/mm, b = " << nips.back().half_chord << " mm, "
-                    << nips.back().active_nodes << " active nodes, "
-                    << nips.back().newton_steps << " Newton steps, "
-                    << (nips.back().linear_iterations > 0
-                          ? std::to_string(nips.back().linear_iterations) +
-                              " GMRES iterations, "
-                          : std::string())
-                    << seconds.back() << " s" << std::endl;
+          print_nip(nips.back(), seconds.back());
         if (!three_d.fix_far_face)
           free_ends.push_back(three_d::evaluate_free_end(body, u0));
         if (parameters.output.write_vtu)
@@ -133,13 +151,7 @@ namespace rollnip
     const three_d::ContactPatch patch   = body.contact_patch();
     if (root)
       {
-        write_atomically(directory + "/line_load_along_axis.csv",
-                         [&](std::ostream &out) {
-                           out << std::setprecision(10)
-                               << "z_mm,line_load_N_per_mm\n";
-                           for (const auto &[z, q] : profile)
-                             out << z << ',' << q << '\n';
-                         });
+        write_line_load(directory + "/line_load_along_axis.csv", profile);
         three_d::write_contact_patch(directory + "/contact_patch.txt",
                                      patch,
                                      nips.back(),

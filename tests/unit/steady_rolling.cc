@@ -96,6 +96,32 @@ namespace
     return contact.solve(theta0);
   }
 
+  /// In linear theory at small speed F_r is the closed form
+  /// g tau V P / R_eff (doc/rolling.md, R.6).
+  void
+  check_linear_theory(testing::Checker &checker, const double theta0)
+  {
+    // Linear theory at small speed: the closed form g tau V P / R_eff.
+    const auto linear = testing::parameters_from_string(
+      "subsection Geometry\n set Inner radius = 47.2\n set Outer radius = "
+      "60.7\nend\nsubsection Mesh\n set Global refinements = 2\nend\n"
+      "subsection Material\n set Theory = linear\nend\nsubsection Contact\n"
+      " set Mode = nip angle\n set Values = 3\n set Indenter radius = "
+      "76.2\nend\n");
+    SteadyRolling slow(scene(linear.material, theta0));
+    const double  V = 0.003 * b_over_tau(theta0) * 1e-3;
+    checker.check(slow.solve_elastic(symmetric_nip(linear, theta0).indentation,
+                                     1) &&
+                    slow.solve_speed(V),
+                  "linear theory: converged at V tau / b = 0.003");
+    const auto   r      = slow.result();
+    const double R_eff  = 1. / (1. / R0 + 1. / Rbar);
+    const double closed = g * tau * 1e3 * V * r.load / R_eff;
+    checker.check(std::abs(r.resistance_energy / closed - 1) < 0.02,
+                  "linear theory: F_r / (g tau V P / R_eff) - 1 = " +
+                    testing::num(r.resistance_energy / closed - 1) +
+                    " (within 2 %)");
+  }
 } // namespace
 
 int
@@ -194,25 +220,6 @@ main(int argc, char **argv)
                 "F_r peaks at V tau / b = " + testing::num(ratios[peak]) +
                   " and falls beyond");
 
-  // Linear theory at small speed: the closed form g tau V P / R_eff.
-  const auto linear = testing::parameters_from_string(
-    "subsection Geometry\n set Inner radius = 47.2\n set Outer radius = "
-    "60.7\nend\nsubsection Mesh\n set Global refinements = 2\nend\n"
-    "subsection Material\n set Theory = linear\nend\nsubsection Contact\n"
-    " set Mode = nip angle\n set Values = 3\n set Indenter radius = "
-    "76.2\nend\n");
-  SteadyRolling slow(scene(linear.material, theta0));
-  const double  V = 0.003 * b_over_tau(theta0) * 1e-3;
-  checker.check(slow.solve_elastic(symmetric_nip(linear, theta0).indentation,
-                                   1) &&
-                  slow.solve_speed(V),
-                "linear theory: converged at V tau / b = 0.003");
-  const auto   r      = slow.result();
-  const double R_eff  = 1. / (1. / R0 + 1. / Rbar);
-  const double closed = g * tau * 1e3 * V * r.load / R_eff;
-  checker.check(std::abs(r.resistance_energy / closed - 1) < 0.02,
-                "linear theory: F_r / (g tau V P / R_eff) - 1 = " +
-                  testing::num(r.resistance_energy / closed - 1) +
-                  " (within 2 %)");
+  check_linear_theory(checker, theta0);
   return checker.result();
 }

@@ -25,10 +25,6 @@ namespace rollnip
     poisson_ratio(const Parameters::Material &material,
                   const unsigned int          layer);
 
-    /// Whether any layer of @p material is compressible.
-    bool
-    any_compressible(const Parameters::Material &material);
-
     /// Checks the entries' counts and ranges (nu in [0, 0.5], K >= 2 G/3,
     /// not both entries); throws a one-line message naming the entry,
     /// prefixed by @p prefix ("Material/" or "Mating roll/Material/").

@@ -20,6 +20,9 @@ namespace rollnip
     double speed_over_nip = 0;
     /// F_r of the first-order route on the same mesh's elastic nip [N/mm].
     double first_order = 0;
+    /// CPU time of this speed's solve (the elastic nip's at speed 0) [s]:
+    /// what benchmarks/rolling_cost.sh tabulates.
+    double cpu_time = 0;
   };
 
   /// F_r [N/mm] of the first-order route (first_order_loss()) at speed
