@@ -128,17 +128,28 @@ mpi_setup()
   fi
 }
 
-# quiet_output: the .prm lines that send a run's files to out/, without
-# VTU files or timing tables (what most tests want of the output).
+# quiet_output [DIR]: the .prm lines that send a run's files to DIR
+# (default out/), without VTU files or timing tables (what most tests want
+# of the output).
 quiet_output()
 {
-  cat <<'PRM'
+  cat <<PRM
 subsection Output
-  set Directory    = out
+  set Directory    = ${1:-out}
   set Write VTU    = false
   set Print timing = false
 end
 PRM
+}
+
+# run_named NAME: runs $rollnip on NAME.prm, its screen into NAME.txt and
+# NAME.err; fails, showing NAME.err, if the run is refused or fails.
+run_named()
+{
+  "$rollnip" "$1.prm" > "$1.txt" 2> "$1.err" || {
+    cat "$1.err"
+    fail "$1: the run was refused or failed"
+  }
 }
 
 # write_long_sweep SCENE FILE: SCENE with 30 load targets (2, 4, .., 60) on

@@ -32,16 +32,9 @@ end
 subsection Accuracy
   set Error estimate = false
 end
-subsection Output
-  set Directory    = $1
-  set Write VTU    = false
-  set Print timing = false
-end
 PRM
-  "$rollnip" "$1.prm" > "$1.txt" 2> "$1.err" || {
-    cat "$1.err"
-    fail "$1: the nip was refused"
-  }
+  quiet_output "$1" >> "$1.prm"
+  run_named "$1"
 }
 run layered "subsection Material
   set C1 = 25000, 0.25
