@@ -1,10 +1,8 @@
-#include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/vector.h>
 
 #include <rollnip/solvers/block_amg.h>
+#include <rollnip/solvers/gmres_solve.h>
 
-#include <sstream>
 
 namespace rollnip
 {
@@ -82,27 +80,7 @@ namespace rollnip
     Assert(matrix, ExcMessage("initialize() first"));
     ++n_solves;
     tmp.reinit(b, true);
-    x                    = 0;
-    const double  b_norm = b.l2_norm();
-    SolverControl control(max_iterations, tolerance * b_norm, false, false);
-    SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData data;
-    data.max_n_tmp_vectors     = 100;
-    data.right_preconditioning = true;
-    SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(control, data);
-    try
-      {
-        gmres.solve(*matrix, x, b, *this);
-      }
-    catch (const SolverControl::NoConvergence &e)
-      {
-        n_iterations += control.last_step();
-        std::ostringstream what;
-        what << "Linear solver/Method = gmres-amg: GMRES reached a relative "
-             << "residual of " << e.last_residual / b_norm << " after "
-             << e.last_step << " iterations (tolerance " << tolerance
-             << "); use the direct method";
-        AssertThrow(false, ExcMessage(what.str()));
-      }
-    n_iterations += control.last_step();
+    n_iterations +=
+      gmres_solve(*matrix, *this, b, x, tolerance, max_iterations);
   }
 } // namespace rollnip

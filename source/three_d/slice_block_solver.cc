@@ -2,15 +2,13 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/component_mask.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/solver_gmres.h>
 
+#include <rollnip/solvers/gmres_solve.h>
 #include <rollnip/three_d/slice_block_solver.h>
 
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
 
-#include <sstream>
 
 namespace rollnip
 {
@@ -47,9 +45,10 @@ namespace rollnip
     SliceBlockSolver::setup(const DoFHandler<dim> &dof_handler,
                             const double           schur_modulus)
     {
-      const IndexSet   &owned        = dof_handler.locally_owned_dofs();
-      const MPI_Comm    communicator = dof_handler.get_communicator();
-      const auto       &fe           = dof_handler.get_fe();
+      fresh_iterations = last_iterations = 0;
+      const IndexSet   &owned            = dof_handler.locally_owned_dofs();
+      const MPI_Comm    communicator     = dof_handler.get_communicator();
+      const auto       &fe               = dof_handler.get_fe();
       std::vector<bool> u_components(dim + 1, true);
       u_components[dim] = false;
       DoFTools::extract_constant_modes(dof_handler,
@@ -96,7 +95,16 @@ namespace rollnip
       const TrilinosWrappers::SparseMatrix &K,
       const TrilinosWrappers::SparseMatrix &augmented)
     {
-      matrix = &K;
+      matrix           = &K;
+      augmented_matrix = &augmented;
+      if (reuse())
+        return;
+      build_hierarchy();
+    }
+
+    void
+    SliceBlockSolver::build_hierarchy()
+    {
       TrilinosWrappers::PreconditionAMG::AdditionalData data;
       data.elliptic       = true;
       data.constant_modes = constant_modes;
@@ -106,11 +114,20 @@ namespace rollnip
       data.aggregation_threshold = 0.02;
       Teuchos::ParameterList              list;
       std::unique_ptr<Epetra_MultiVector> constant;
-      data.set_parameters(list, constant, augmented);
+      data.set_parameters(list, constant, *augmented_matrix);
       list.set("null space: type", "pre-computed");
       list.set("null space: dimension", static_cast<int>(2 * dim));
       list.set("null space: vectors", rigid_modes.data());
-      amg.initialize(augmented, list);
+      amg.initialize(*augmented_matrix, list);
+      ++n_setups;
+      fresh_iterations = last_iterations = 0;
+    }
+
+    bool
+    SliceBlockSolver::reuse() const
+    {
+      return fresh_iterations > 0 &&
+             2 * last_iterations <= 3 * fresh_iterations;
     }
 
     void
@@ -135,27 +152,23 @@ namespace rollnip
     {
       Assert(matrix, ExcMessage("initialize() first"));
       tmp.reinit(b, true);
-      x                    = 0;
-      const double  b_norm = b.l2_norm();
-      SolverControl control(max_iterations, tolerance * b_norm, false, false);
-      SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData data;
-      data.max_n_tmp_vectors     = 100;
-      data.right_preconditioning = true;
-      SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(control, data);
       try
         {
-          gmres.solve(*matrix, x, b, *this);
+          last_iterations =
+            gmres_solve(*matrix, *this, b, x, tolerance, max_iterations);
         }
-      catch (const SolverControl::NoConvergence &e)
+      catch (const ExceptionBase &)
         {
-          std::ostringstream what;
-          what << "Linear solver/Method = gmres-amg: GMRES reached a relative "
-               << "residual of " << e.last_residual / b_norm << " after "
-               << e.last_step << " iterations (tolerance " << tolerance
-               << "; Linear solver/Max iterations); use the direct method";
-          AssertThrow(false, ExcMessage(what.str()));
+          // A kept hierarchy that no longer suffices: one fresh try.
+          if (fresh_iterations == 0)
+            throw;
+          build_hierarchy();
+          last_iterations =
+            gmres_solve(*matrix, *this, b, x, tolerance, max_iterations);
         }
-      n_iterations += control.last_step();
+      if (fresh_iterations == 0)
+        fresh_iterations = last_iterations;
+      n_iterations += last_iterations;
     }
   } // namespace three_d
 } // namespace rollnip

@@ -28,7 +28,8 @@ namespace rollnip
     {
       if (iterative)
         {
-          // A new hierarchy every Newton step: K and the active set change.
+          // K and the active set change every Newton step; the AMG
+          // hierarchy is kept while it still serves (SliceBlockSolver).
           block_amg->initialize(system_matrix, preconditioner_matrix);
           block_amg->solve(system_rhs, du);
           return;

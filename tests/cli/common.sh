@@ -188,3 +188,21 @@ start_until_nip2()
   cat stdout.txt stderr.txt
   fail "the sweep did not reach nip 2"
 }
+
+# engineer_roll_scene: the Geometry and Mesh of the engineer's 250 mm roll
+# with a 13.5 mm cover (a 90 deg sector, mesh level 1) on stdout.
+engineer_roll_scene()
+{
+  cat <<'PRM'
+subsection Geometry
+  set Roll diameter   = 250
+  set Cover thickness = 13.5
+  set Sector angle    = 90
+end
+subsection Mesh
+  set Radial cells          = 8
+  set Circumferential cells = 18
+  set Global refinements    = 1
+end
+PRM
+}

@@ -34,17 +34,8 @@ start_test engineer_units
 # scene DIR MATERIAL_LINES CONTACT_LINES OUTPUT_LINES: a .prm on stdout.
 scene()
 {
+  engineer_roll_scene
   cat <<PRM
-subsection Geometry
-  set Roll diameter   = 250
-  set Cover thickness = 13.5
-  set Sector angle    = 90
-end
-subsection Mesh
-  set Radial cells          = 8
-  set Circumferential cells = 18
-  set Global refinements    = 1
-end
 subsection Material
 $2
 end

@@ -18,16 +18,7 @@ rollnip="$1"
 require_executable rollnip "$rollnip"
 start_test two_roll_loss
 
-cover="subsection Geometry
-  set Roll diameter   = 250
-  set Cover thickness = 13.5
-  set Sector angle    = 90
-end
-subsection Mesh
-  set Radial cells          = 8
-  set Circumferential cells = 18
-  set Global refinements    = 1
-end
+cover="$(engineer_roll_scene)
 subsection Material
   set C1 = 0.6
   set C2 = 0

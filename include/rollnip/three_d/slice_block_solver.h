@@ -39,6 +39,8 @@ namespace rollnip
       setup(const DoFHandler<dim> &dof_handler, const double schur_modulus);
 
       /// Builds the AMG hierarchy of @p augmented; K is used by solve().
+      /// A new AMG hierarchy for @p augmented, or the last one kept when
+      /// its GMRES iterations have not grown (reuse()).
       void
       initialize(const TrilinosWrappers::SparseMatrix &K,
                  const TrilinosWrappers::SparseMatrix &augmented);
@@ -54,11 +56,23 @@ namespace rollnip
             const TrilinosWrappers::MPI::Vector &r) const;
 
       unsigned int n_iterations = 0; ///< GMRES iterations, all solves
+      unsigned int n_setups     = 0; ///< AMG hierarchies built
 
     private:
+      /// Whether the next solve can keep the hierarchy of an earlier
+      /// Newton step: ML smooths with the current fine matrix (it wraps
+      /// it, not a copy), so an old hierarchy stays a good preconditioner
+      /// while the iterations stay within 1.5 times the fresh count.
+      bool
+      reuse() const;
+
+      void
+      build_hierarchy();
+
       const double                          tolerance;
       const unsigned int                    max_iterations;
-      const TrilinosWrappers::SparseMatrix *matrix = nullptr;
+      const TrilinosWrappers::SparseMatrix *matrix           = nullptr;
+      const TrilinosWrappers::SparseMatrix *augmented_matrix = nullptr;
       TrilinosWrappers::PreconditionAMG     amg;
       /// The six rigid-body modes, locally owned rows, one mode after
       /// the other (ML's "null space: vectors").
@@ -70,6 +84,9 @@ namespace rollnip
       /// 1 at the displacement dofs, 0 at the pressure dofs.
       TrilinosWrappers::MPI::Vector         displacement_mask;
       mutable TrilinosWrappers::MPI::Vector tmp;
+      /// GMRES iterations of the first and of the last solve with the
+      /// current hierarchy (0: none yet).
+      unsigned int fresh_iterations = 0, last_iterations = 0;
     };
   } // namespace three_d
 } // namespace rollnip
