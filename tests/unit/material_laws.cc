@@ -13,25 +13,16 @@
 #include <rollnip/material/material_table.h>
 #include <rollnip/material/mooney_rivlin_law.h>
 
+#include "random_tensor.h"
 #include "test_tools.h"
 
 #include <random>
 
 using namespace rollnip;
+using testing::random_tensor;
 
 namespace
 {
-  Tensor<2, dim>
-  random_tensor(std::mt19937 &gen, const double scale)
-  {
-    std::uniform_real_distribution<double> u(-scale, scale);
-    Tensor<2, dim>                         t;
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = 0; j < dim; ++j)
-        t[i][j] = u(gen);
-    return t;
-  }
-
   Parameters::Material
   two_layers(const Parameters::Theory theory)
   {
@@ -47,8 +38,8 @@ namespace
   check_factory(testing::Checker &check, std::mt19937 &gen)
   {
     const Tensor<2, dim> I  = unit_symmetric_tensor<dim>();
-    const Tensor<2, dim> F  = I + random_tensor(gen, 0.3);
-    const Tensor<2, dim> dF = random_tensor(gen, 1.);
+    const Tensor<2, dim> F  = I + random_tensor<dim>(gen, 0.3);
+    const Tensor<2, dim> dF = random_tensor<dim>(gen, 1.);
     for (const auto theory :
          {Parameters::Theory::nonlinear, Parameters::Theory::linear})
       {
@@ -113,7 +104,7 @@ main()
   double d_P0 = 0, d_dP = 0, d_dir = 0, d_c = 0;
   for (unsigned int sample = 0; sample < 40; ++sample)
     {
-      Tensor<2, dim> H = random_tensor(gen, 1.);
+      Tensor<2, dim> H = random_tensor<dim>(gen, 1.);
       H -= 0.5 * trace(H) * I; // isochoric
       const double q         = std::uniform_real_distribution<>(-2, 2)(gen);
       const double eps       = 1e-3;

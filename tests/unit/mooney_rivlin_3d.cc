@@ -11,26 +11,16 @@
 
 #include <rollnip/material/mooney_rivlin_law.h>
 
+#include "random_tensor.h"
 #include "test_tools.h"
 
 #include <random>
 
 using namespace rollnip;
+using testing::random_tensor;
 
 namespace
 {
-  template <int d>
-  Tensor<2, d>
-  random_tensor(std::mt19937 &gen, const double scale)
-  {
-    std::uniform_real_distribution<double> u(-scale, scale);
-    Tensor<2, d>                           t;
-    for (unsigned int i = 0; i < d; ++i)
-      for (unsigned int j = 0; j < d; ++j)
-        t[i][j] = u(gen);
-    return t;
-  }
-
   Tensor<2, 3>
   embed(const Tensor<2, 2> &F2)
   {

@@ -17,25 +17,16 @@
 #include <rollnip/material/mooney_rivlin_law.h>
 #include <rollnip/material/scaled_law.h>
 
+#include "random_tensor.h"
 #include "test_tools.h"
 
 #include <random>
 
 using namespace rollnip;
+using testing::random_tensor;
 
 namespace
 {
-  Tensor<2, dim>
-  random_tensor(std::mt19937 &gen, const double scale)
-  {
-    std::uniform_real_distribution<double> u(-scale, scale);
-    Tensor<2, dim>                         t;
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = 0; j < dim; ++j)
-        t[i][j] = u(gen);
-    return t;
-  }
-
   /// The largest difference of every evaluation of @p a and @p b at
   /// (F, q) along dF.
   double
@@ -104,10 +95,10 @@ main()
     {
       const double   s = std::uniform_real_distribution<>(0.3, 1.7)(gen);
       const double   q = std::uniform_real_distribution<>(-2, 2)(gen);
-      Tensor<2, dim> F = I + random_tensor(gen, 0.4);
+      Tensor<2, dim> F = I + random_tensor<dim>(gen, 0.4);
       if (determinant(F) < 0.3)
         F = I;
-      const Tensor<2, dim> dF = random_tensor(gen, 1.);
+      const Tensor<2, dim> dF = random_tensor<dim>(gen, 1.);
 
       const MooneyRivlinLaw<dim> base(C1, C2), scaled(s * C1, s * C2);
       d_finite =
