@@ -13,12 +13,7 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-[ $# -eq 2 ] || fail "usage: applied_load.sh ROLLNIP PRESSURE_PRM"
-rollnip="$1"
-scene="$2"
-require_executable rollnip "$rollnip"
-[ -f "$scene" ] || fail "parameter file '$scene' not found"
-start_test applied_load
+scene_test_args applied_load PRESSURE_PRM "$@"
 
 cp "$scene" run.prm
 "$rollnip" --validate run.prm > stdout.txt 2> stderr.txt || {

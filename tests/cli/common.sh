@@ -206,3 +206,29 @@ subsection Mesh
 end
 PRM
 }
+
+# scene_test_args NAME PRM_KIND ROLLNIP PRM: the arguments of a script run
+# as NAME.sh ROLLNIP PRM; sets rollnip and scene, checks that both exist
+# and starts test NAME.
+scene_test_args()
+{
+  local name="$1" kind="$2"
+  shift 2
+  [ $# -eq 2 ] || fail "usage: $name.sh ROLLNIP $kind"
+  rollnip="$1"
+  scene="$2"
+  require_executable rollnip "$rollnip"
+  [ -f "$scene" ] || fail "parameter file '$scene' not found"
+  start_test "$name"
+}
+
+# files_agree NUMDIFF REL ABS A B: whether files A and B agree to the
+# relative and absolute tolerances (fields split at blanks, commas and
+# '='); if not, the last 30 lines of numdiff's report are printed.
+files_agree()
+{
+  local numdiff="$1" rel="$2" abs="$3" a="$4" b="$5"
+  "$numdiff" --quiet -r "$rel" -a "$abs" -s $' \t\n,=' "$a" "$b" > /dev/null && return 0
+  "$numdiff" -r "$rel" -a "$abs" -s $' \t\n,=' "$a" "$b" | tail -n 30 || true
+  return 1
+}

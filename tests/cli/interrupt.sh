@@ -8,12 +8,7 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-[ $# -eq 2 ] || fail "usage: interrupt.sh ROLLNIP LOAD_PRM"
-rollnip="$1"
-scene="$2"
-require_executable rollnip "$rollnip"
-[ -f "$scene" ] || fail "parameter file '$scene' not found"
-start_test interrupt
+scene_test_args interrupt LOAD_PRM "$@"
 
 write_long_sweep "$scene" run.prm
 # Interrupt the third nip or a later one.

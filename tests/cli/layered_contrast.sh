@@ -12,12 +12,7 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-[ $# -eq 2 ] || fail "usage: layered_contrast.sh ROLLNIP LAYERED_PRM"
-rollnip="$1"
-scene="$2"
-require_executable rollnip "$rollnip"
-[ -f "$scene" ] || fail "parameter file '$scene' not found"
-start_test layered_contrast
+scene_test_args layered_contrast LAYERED_PRM "$@"
 
 # run NAME MATERIAL_AND_GEOMETRY: the nip at 10 N/mm, output in NAME/.
 run()

@@ -12,12 +12,7 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-[ $# -eq 2 ] || fail "usage: long_expression.sh ROLLNIP PRESSURE_PRM"
-rollnip="$1"
-scene="$2"
-require_executable rollnip "$rollnip"
-[ -f "$scene" ] || fail "parameter file '$scene' not found"
-start_test long_expression
+scene_test_args long_expression PRESSURE_PRM "$@"
 
 # with_expression FILE EXPRESSION: the scene with that pressure.
 with_expression()

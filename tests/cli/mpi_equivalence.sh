@@ -139,14 +139,9 @@ done
 compare()
 {
   local rel="${2:-1e-8}" abs="${3:-1e-12}"
-  if "$numdiff" --quiet -r "$rel" -a "$abs" -s $' \t\n,=' \
-       "out_serial/$1" "out_parallel/$1" > /dev/null; then
-    pass "$1: serial and 2 processes agree ($(wc -l < "out_serial/$1") lines, rel $rel, abs $abs)"
-  else
-    "$numdiff" -r "$rel" -a "$abs" -s $' \t\n,=' \
-      "out_serial/$1" "out_parallel/$1" | tail -n 30 || true
+  files_agree "$numdiff" "$rel" "$abs" "out_serial/$1" "out_parallel/$1" ||
     fail "$1 differs between 1 and 2 MPI processes"
-  fi
+  pass "$1: serial and 2 processes agree ($(wc -l < "out_serial/$1") lines, rel $rel, abs $abs)"
 }
 
 # The estimated errors (columns *_err_*) are differences of two solves, so

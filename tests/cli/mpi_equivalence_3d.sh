@@ -75,23 +75,17 @@ for dir in out_serial out_parallel; do
   cut -d, -f1-7 "$dir/slice_3d.csv" > "$dir/slice_compared.csv"
 done
 for f in summary_compared.txt slice_compared.csv; do
-  if "$numdiff" --quiet -r 1e-8 -a 1e-12 -s $' \t\n,=' "out_serial/$f" "out_parallel/$f" > /dev/null; then
-    pass "$f: serial and $np processes agree (rel 1e-8)"
-  else
-    "$numdiff" -r 1e-8 -a 1e-12 -s $' \t\n,=' "out_serial/$f" "out_parallel/$f" | tail -n 20 || true
+  files_agree "$numdiff" 1e-8 1e-12 "out_serial/$f" "out_parallel/$f" ||
     fail "$f differs between 1 and $np MPI processes"
-  fi
+  pass "$f: serial and $np processes agree (rel 1e-8)"
 done
 # The outputs a 3D scene adds: the contact patch, and the line load beside
 # the core's deflection.
 for f in contact_patch.txt core_deflection_along_axis.csv; do
   [ -f "out_serial/$f" ] || continue
-  if "$numdiff" --quiet -r 1e-8 -a 1e-12 -s $' \t\n,=' "out_serial/$f" "out_parallel/$f" > /dev/null; then
-    pass "$f: serial and $np processes agree (rel 1e-8)"
-  else
-    "$numdiff" -r 1e-8 -a 1e-12 -s $' \t\n,=' "out_serial/$f" "out_parallel/$f" | tail -n 20 || true
+  files_agree "$numdiff" 1e-8 1e-12 "out_serial/$f" "out_parallel/$f" ||
     fail "$f differs between 1 and $np MPI processes"
-  fi
+  pass "$f: serial and $np processes agree (rel 1e-8)"
 done
 echo "serial:   P = $(summary_value out_serial/summary.txt nip_load_P_N_per_mm) N/mm"
 echo "parallel: P = $(summary_value out_parallel/summary.txt nip_load_P_N_per_mm) N/mm"

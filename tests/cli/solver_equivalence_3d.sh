@@ -65,12 +65,9 @@ for dir in out_direct out_gmres-amg; do
   cut -d, -f1-7 "$dir/slice_3d.csv" > "$dir/slice_compared.csv"
 done
 for f in summary_compared.txt slice_compared.csv line_load_along_axis.csv; do
-  if "$numdiff" --quiet -r 1e-6 -a 1e-9 -s $' \t\n,=' "out_direct/$f" "out_gmres-amg/$f" > /dev/null; then
-    pass "$f: gmres-amg and direct agree (rel 1e-6)"
-  else
-    "$numdiff" -r 1e-6 -a 1e-9 -s $' \t\n,=' "out_direct/$f" "out_gmres-amg/$f" | tail -n 20 || true
+  files_agree "$numdiff" 1e-6 1e-9 "out_direct/$f" "out_gmres-amg/$f" ||
     fail "$f differs between gmres-amg and direct"
-  fi
+  pass "$f: gmres-amg and direct agree (rel 1e-6)"
 done
 echo "direct:    P = $(summary_value out_direct/summary.txt nip_load_P_N_per_mm) N/mm"
 echo "gmres-amg: P = $(summary_value out_gmres-amg/summary.txt nip_load_P_N_per_mm) N/mm"

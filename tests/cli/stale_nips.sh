@@ -9,12 +9,7 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-[ $# -eq 2 ] || fail "usage: stale_nips.sh ROLLNIP NIP_ANGLE_PRM"
-rollnip="$1"
-scene="$2"
-require_executable rollnip "$rollnip"
-[ -f "$scene" ] || fail "parameter file '$scene' not found"
-start_test stale_nips
+scene_test_args stale_nips NIP_ANGLE_PRM "$@"
 
 # sweep VALUES: the scene on a small mesh at these nip angles, into out/.
 sweep()

@@ -22,12 +22,7 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-[ $# -eq 2 ] || fail "usage: thermal_softening.sh ROLLNIP ROLLING_HEAT_PRM"
-rollnip="$1"
-scene="$2"
-require_executable rollnip "$rollnip"
-[ -f "$scene" ] || fail "parameter file '$scene' not found"
-start_test thermal_softening
+scene_test_args thermal_softening ROLLING_HEAT_PRM "$@"
 
 # run NAME EXTRA: the example at 20 kN/m with EXTRA appended, output in
 # NAME/.

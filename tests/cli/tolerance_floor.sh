@@ -11,12 +11,7 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-[ $# -eq 2 ] || fail "usage: tolerance_floor.sh ROLLNIP LOAD_PRM"
-rollnip="$1"
-scene="$2"
-require_executable rollnip "$rollnip"
-[ -f "$scene" ] || fail "parameter file '$scene' not found"
-start_test tolerance_floor
+scene_test_args tolerance_floor LOAD_PRM "$@"
 
 cp "$scene" run.prm
 cat >> run.prm <<PRM

@@ -11,12 +11,7 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-[ $# -eq 2 ] || fail "usage: two_roll_reproducible.sh ROLLNIP TWO_ROLLS_PRM"
-rollnip="$1"
-scene="$2"
-require_executable rollnip "$rollnip"
-[ -f "$scene" ] || fail "parameter file '$scene' not found"
-start_test two_roll_reproducible
+scene_test_args two_roll_reproducible TWO_ROLLS_PRM "$@"
 
 # run NAME CONTACT_ENTRIES: the scene on smaller meshes, output in NAME/.
 run()
