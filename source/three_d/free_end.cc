@@ -85,8 +85,11 @@ namespace rollnip
     } // namespace
 
     EndDecay
-    end_decay(const std::vector<std::pair<double, double>> &profile)
+    end_decay(const std::vector<std::pair<double, double>> &profile,
+              const std::vector<double>                    &widths)
     {
+      AssertThrow(widths.empty() || widths.size() == profile.size(),
+                  ExcMessage("end_decay: one width per plane"));
       AssertThrow(profile.size() >= 2,
                   ExcMessage("end_decay: the profile needs two planes"));
       EndDecay d;
@@ -95,7 +98,8 @@ namespace rollnip
       d.q_end         = profile.back().second;
       double integral = 0;
       for (unsigned int j = 0; j < profile.size(); ++j)
-        integral += profile[j].second * tributary_length(profile, j);
+        integral += profile[j].second *
+                    (widths.empty() ? tributary_length(profile, j) : widths[j]);
       d.q_mean         = integral / d.length;
       d.deficit_length = d.q_far > 0 ? d.length - integral / d.q_far : 0.;
       d.rise_95        = d.q_far > 0 ? rise_distance(profile, 0.95) : 0.;
@@ -235,8 +239,9 @@ namespace rollnip
     evaluate_free_end(const SliceBody &body, const double u0)
     {
       FreeEnd result;
-      result.u0                         = u0;
-      result.decay                      = end_decay(body.line_load_profile());
+      result.u0 = u0;
+      result.decay =
+        end_decay(body.line_load_profile(), body.line_load_widths());
       const MPI_Comm              comm  = body.mpi_communicator();
       const std::array<double, 4> bulge = end_face_bulge(body);
       result.bulge                      = bulge[0];

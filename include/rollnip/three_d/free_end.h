@@ -44,10 +44,12 @@ namespace rollnip
     };
 
     /// The decay of the profile @p profile ((z [mm], q [N/mm]) from z = 0
-    /// to z = L, each q the nodal force over the plane's tributary
-    /// length, half a layer at both ends).
+    /// to z = L, each q the nodal force over the plane's share @p widths
+    /// of the length (SliceBody::line_load_widths()); empty @p widths:
+    /// half the distances to the neighbouring planes (Q1)).
     EndDecay
-    end_decay(const std::vector<std::pair<double, double>> &profile);
+    end_decay(const std::vector<std::pair<double, double>> &profile,
+              const std::vector<double> &widths = std::vector<double>());
 
     /// The bond stresses at one bonded node [MPa], from its reaction over
     /// its lumped area on the core (the bonded surface does not move, so
