@@ -11,24 +11,22 @@ namespace rollnip
 {
   namespace three_d
   {
-    namespace
+    std::vector<double>
+    SliceBody::node_planes() const
     {
-      /// The z of the planes of surface nodes [mm]: the layer boundaries
-      /// of @p z, with the layers' middles too for @p degree 2.
-      std::vector<double>
-      node_planes(const std::vector<double> &z, const unsigned int degree)
-      {
-        if (degree == 1)
-          return z;
-        std::vector<double> planes = {z.front()};
-        for (unsigned int j = 1; j < z.size(); ++j)
-          {
-            planes.push_back((z[j - 1] + z[j]) / 2.);
-            planes.push_back(z[j]);
-          }
-        return planes;
-      }
-    } // namespace
+      const std::vector<double> z = axial_planes(three_d.slice_thickness,
+                                                 three_d.layers,
+                                                 three_d.axial_grading);
+      if (degree == 1)
+        return z;
+      std::vector<double> planes = {z.front()};
+      for (unsigned int j = 1; j < z.size(); ++j)
+        {
+          planes.push_back((z[j - 1] + z[j]) / 2.);
+          planes.push_back(z[j]);
+        }
+      return planes;
+    }
 
     std::vector<double>
     SliceBody::line_load_widths() const
@@ -38,7 +36,7 @@ namespace rollnip
       const std::vector<double> z = axial_planes(three_d.slice_thickness,
                                                  three_d.layers,
                                                  three_d.axial_grading);
-      std::vector<double>       widths(node_planes(z, degree).size(), 0.);
+      std::vector<double>       widths(node_planes().size(), 0.);
       for (unsigned int j = 0; j + 1 < z.size(); ++j)
         {
           const double h = z[j + 1] - z[j];
@@ -60,11 +58,7 @@ namespace rollnip
     std::vector<std::pair<double, double>>
     SliceBody::line_load_profile() const
     {
-      const std::vector<double> planes =
-        node_planes(axial_planes(three_d.slice_thickness,
-                                 three_d.layers,
-                                 three_d.axial_grading),
-                    degree);
+      const std::vector<double> planes = node_planes();
       const std::vector<double> widths = line_load_widths();
       std::vector<double>       f(planes.size(), 0.);
       for (const auto &[x_dof, node] : surface)

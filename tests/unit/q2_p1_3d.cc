@@ -163,7 +163,7 @@ namespace
     // Q1-P0's error: its slice against Q2-P1's (the finer family).
     const double q1_error = std::abs(P_slice[0] / P_slice[1] - 1.);
     const double diff     = std::abs(q_far[1] / q_far[0] - 1.);
-    check.check(diff < 1.5 * q1_error + 1e-3,
+    check.check(diff < 1.5 * q1_error,
                 "free end: Q2-P1 q(0) " + testing::num(q_far[1]) +
                   " against Q1-P0 " + testing::num(q_far[0]) +
                   " N/mm, relative difference " + testing::num(diff) +

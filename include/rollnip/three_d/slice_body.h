@@ -102,6 +102,11 @@ namespace rollnip
       std::vector<std::pair<double, double>>
       line_load_profile() const;
 
+      /// The z of the planes of nodes along the axis [mm]: the layer
+      /// boundaries, and with Q2 the layers' middles too.
+      std::vector<double>
+      node_planes() const;
+
       /// The share of the slice length [mm] of every plane of
       /// line_load_profile(): half the layers on either side (Q1), the
       /// lumped Q2 weights h/6 + h/6 at a vertex plane and 2h/3 at a
@@ -167,13 +172,18 @@ namespace rollnip
       {
         return communicator;
       }
+      const Parameters::AllParameters &
+      parameters_of_mesh() const
+      {
+        return parameters;
+      }
       const Parameters::ThreeD &
       three_d_parameters() const
       {
         return three_d;
       }
 
-    private:
+      /// Read access for the free-end measures (free_end.h) too.
       /// The three displacement dofs and the reference position of a
       /// node (a support point of the displacement) of a boundary.
       struct SurfaceNode
@@ -196,6 +206,7 @@ namespace rollnip
       TrilinosWrappers::MPI::Vector
       lumped_areas(const types::boundary_id id, const bool deformed) const;
 
+    private:
       void
       setup_system();
       void
