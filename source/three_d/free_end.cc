@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <limits>
 #include <set>
+#include <tuple>
 
 namespace rollnip
 {
@@ -85,8 +86,11 @@ namespace rollnip
     } // namespace
 
     EndDecay
-    end_decay(const std::vector<std::pair<double, double>> &profile)
+    end_decay(const std::vector<std::pair<double, double>> &profile,
+              const std::vector<double>                    &widths)
     {
+      AssertThrow(widths.empty() || widths.size() == profile.size(),
+                  ExcMessage("end_decay: one width per plane"));
       AssertThrow(profile.size() >= 2,
                   ExcMessage("end_decay: the profile needs two planes"));
       EndDecay d;
@@ -95,7 +99,8 @@ namespace rollnip
       d.q_end         = profile.back().second;
       double integral = 0;
       for (unsigned int j = 0; j < profile.size(); ++j)
-        integral += profile[j].second * tributary_length(profile, j);
+        integral += profile[j].second *
+                    (widths.empty() ? tributary_length(profile, j) : widths[j]);
       d.q_mean         = integral / d.length;
       d.deficit_length = d.q_far > 0 ? d.length - integral / d.q_far : 0.;
       d.rise_95        = d.q_far > 0 ? rise_distance(profile, 0.95) : 0.;
@@ -109,125 +114,99 @@ namespace rollnip
       std::array<double, 4>
       end_face_bulge(const SliceBody &body)
       {
-        const auto           &dofs  = body.get_dof_handler();
-        const auto           &u     = body.current_solution();
-        const auto            owned = dofs.locally_owned_dofs();
-        std::array<double, 4> best  = {
-           {-std::numeric_limits<double>::max(), 0., 0., 0.}};
-        for (const auto &cell : dofs.active_cell_iterators())
-          if (cell->is_locally_owned())
-            for (const auto &face : cell->face_iterators())
-              if (face->at_boundary() &&
-                  face->boundary_id() == SliceIds::far_face)
-                for (unsigned int v = 0; v < face->n_vertices(); ++v)
-                  {
-                    const auto dof = face->vertex_dof_index(v, 2);
-                    if (owned.is_element(dof) && u[dof] > best[0])
-                      best = {{u[dof],
-                               face->vertex(v)[0],
-                               face->vertex(v)[1],
-                               face->vertex(v)[2]}};
-                  }
+        const auto &u     = body.current_solution();
+        const auto  owned = body.get_dof_handler().locally_owned_dofs();
+        std::array<double, 4> best = {
+          {-std::numeric_limits<double>::max(), 0., 0., 0.}};
+        for (const auto &[x_dof, node] :
+             body.boundary_nodes(SliceIds::far_face))
+          if (owned.is_element(node.dofs[2]) && u[node.dofs[2]] > best[0])
+            best = {{u[node.dofs[2]], node.X[0], node.X[1], node.X[2]}};
         return global_max(best, body.mpi_communicator());
       }
 
-      /// Lumped areas int phi_i dA of the bonded nodes, by x dof [mm^2].
-      TrilinosWrappers::MPI::Vector
-      bond_areas(const SliceBody &body)
-      {
-        const auto                          &dofs = body.get_dof_handler();
-        const auto                          &fe   = dofs.get_fe();
-        TrilinosWrappers::MPI::Vector        area(dofs.locally_owned_dofs(),
-                                           body.mpi_communicator());
-        FEFaceValues<dim>                    fv(fe,
-                             QGauss<dim - 1>(2),
-                             update_values | update_JxW_values);
-        std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
-        for (const auto &cell : dofs.active_cell_iterators())
-          if (cell->is_locally_owned())
-            for (const unsigned int f : cell->face_indices())
-              if (cell->face(f)->at_boundary() &&
-                  cell->face(f)->boundary_id() == SliceIds::inner_arc)
-                {
-                  fv.reinit(cell, f);
-                  cell->get_dof_indices(indices);
-                  for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                    if (fe.system_to_component_index(i).first == 0 &&
-                        fe.has_support_on_face(i, f))
-                      {
-                        double a = 0;
-                        for (unsigned int q = 0; q < fv.n_quadrature_points;
-                             ++q)
-                          a += fv.shape_value_component(i, q, 0) * fv.JxW(q);
-                        area.add(
-                          std::vector<types::global_dof_index>{indices[i]},
-                          std::vector<double>{a});
-                      }
-                }
-        area.compress(VectorOperation::add);
-        return area;
-      }
-
-      /// The x dofs of the vertices on the faces with boundary id @p id
-      /// (of the locally owned and ghost cells).
+      /// The x dofs of the nodes on the boundary @p id.
       std::set<types::global_dof_index>
-      nodes_on(const DoFHandler<dim> &dofs, const types::boundary_id id)
+      nodes_on(const SliceBody &body, const types::boundary_id id)
       {
         std::set<types::global_dof_index> nodes;
-        for (const auto &cell : dofs.active_cell_iterators())
-          if (!cell->is_artificial())
-            for (const auto &face : cell->face_iterators())
-              if (face->at_boundary() && face->boundary_id() == id)
-                for (unsigned int v = 0; v < face->n_vertices(); ++v)
-                  nodes.insert(face->vertex_dof_index(v, 0));
+        for (const auto &[x_dof, node] : body.boundary_nodes(id))
+          nodes.insert(x_dof);
         return nodes;
       }
 
-      /// The bond stresses of every locally owned bonded node but those on
-      /// the far edge (whose reaction holds the far edge's support too). On
-      /// the symmetry planes theta = 0 and z = 0 the reaction normal to the
-      /// plane holds the plane's support: the shear across it is zero by
-      /// symmetry and is set so.
+      /// The bond stresses of every locally owned bonded node (Q2: vertex,
+      /// edge and face nodes) but those on the far edge (whose reaction
+      /// holds the far edge's support too), from its reaction over its
+      /// lumped area. On the symmetry planes theta = 0 and z = 0 the
+      /// reaction normal to the plane holds the plane's support: the shear
+      /// across it is zero by symmetry and is set so.
       std::vector<BondStress>
       bond_stresses(const SliceBody &body)
       {
-        const auto                         &dofs      = body.get_dof_handler();
-        const auto                         &reactions = body.nodal_reactions();
-        const auto                          owned = dofs.locally_owned_dofs();
-        const TrilinosWrappers::MPI::Vector area  = bond_areas(body);
-        const auto on_far_edge  = nodes_on(dofs, SliceIds::far_edge);
-        const auto on_nip_plane = nodes_on(dofs, SliceIds::symmetry_edge);
-        const auto on_middle    = nodes_on(dofs, SliceIds::near_face);
-        std::set<types::global_dof_index> seen;
-        std::vector<BondStress>           result;
-        for (const auto &cell : dofs.active_cell_iterators())
-          if (cell->is_locally_owned())
-            for (const auto &face : cell->face_iterators())
-              if (face->at_boundary() &&
-                  face->boundary_id() == SliceIds::inner_arc)
-                for (unsigned int v = 0; v < face->n_vertices(); ++v)
-                  {
-                    const auto x_dof = face->vertex_dof_index(v, 0);
-                    if (!owned.is_element(x_dof) || on_far_edge.count(x_dof) ||
-                        !seen.insert(x_dof).second)
-                      continue;
-                    const Point<dim> X = face->vertex(v);
-                    Tensor<1, dim>   t; // on the cover, by the core [MPa]
-                    for (unsigned int c = 0; c < dim; ++c)
-                      t[c] =
-                        reactions[face->vertex_dof_index(v, c)] / area[x_dof];
-                    const double r = std::hypot(X[0], X[1]);
-                    // The cover's outer normal at the bond is -e_r.
-                    BondStress s;
-                    s.where      = X;
-                    s.sigma_rr   = -(t[0] * X[0] + t[1] * X[1]) / r;
-                    s.tau_rtheta = on_nip_plane.count(x_dof)
-                                     ? 0.
-                                     : -(-t[0] * X[1] + t[1] * X[0]) / r;
-                    s.tau_rz     = on_middle.count(x_dof) ? 0. : -t[2];
-                    result.push_back(s);
-                  }
+        const auto &reactions = body.nodal_reactions();
+        const auto  owned     = body.get_dof_handler().locally_owned_dofs();
+        const TrilinosWrappers::MPI::Vector area =
+          body.lumped_areas(SliceIds::inner_arc, false);
+        const auto on_far_edge  = nodes_on(body, SliceIds::far_edge);
+        const auto on_nip_plane = nodes_on(body, SliceIds::symmetry_edge);
+        const auto on_middle    = nodes_on(body, SliceIds::near_face);
+        std::vector<BondStress> result;
+        for (const auto &[x_dof, node] :
+             body.boundary_nodes(SliceIds::inner_arc))
+          {
+            if (!owned.is_element(x_dof) || on_far_edge.count(x_dof))
+              continue;
+            const Point<dim> &X = node.X;
+            Tensor<1, dim>    t; // on the cover, by the core [MPa]
+            for (unsigned int c = 0; c < dim; ++c)
+              t[c] = reactions[node.dofs[c]] / area[x_dof];
+            const double r = std::hypot(X[0], X[1]);
+            // The cover's outer normal at the bond is -e_r.
+            BondStress s;
+            s.where      = X;
+            s.sigma_rr   = -(t[0] * X[0] + t[1] * X[1]) / r;
+            s.tau_rtheta = on_nip_plane.count(x_dof)
+                             ? 0.
+                             : -(-t[0] * X[1] + t[1] * X[0]) / r;
+            s.tau_rz     = on_middle.count(x_dof) ? 0. : -t[2];
+            result.push_back(s);
+          }
         return result;
+      }
+
+      /// sigma_rr and tau_rz at the bonded corner averaged with the tent
+      /// of length @p s (FreeEnd::corner_sigma_rr) [MPa].
+      std::pair<double, double>
+      corner_average(const SliceBody &body, const double s)
+      {
+        const auto &reactions = body.nodal_reactions();
+        const auto  owned     = body.get_dof_handler().locally_owned_dofs();
+        const TrilinosWrappers::MPI::Vector area =
+          body.lumped_areas(SliceIds::inner_arc, false);
+        const double L      = body.three_d_parameters().slice_thickness;
+        double       sum[3] = {0, 0, 0}; // w a, -w R . e_r, -w R_z
+        for (const auto &[x_dof, node] :
+             body.boundary_nodes(SliceIds::inner_arc))
+          {
+            if (!owned.is_element(x_dof))
+              continue;
+            const Point<dim> &X = node.X;
+            const double      r = std::hypot(X[0], X[1]);
+            const double      w = std::max(0., 1. - (L - X[2]) / s) *
+                             std::max(0., 1. - r * std::atan2(X[1], X[0]) / s);
+            if (w == 0)
+              continue;
+            sum[0] += w * area[x_dof];
+            sum[1] -= w *
+                      (reactions[node.dofs[0]] * X[0] +
+                       reactions[node.dofs[1]] * X[1]) /
+                      r;
+            sum[2] -= w * reactions[node.dofs[2]];
+          }
+        const double a = Utilities::MPI::sum(sum[0], body.mpi_communicator());
+        return {Utilities::MPI::sum(sum[1], body.mpi_communicator()) / a,
+                Utilities::MPI::sum(sum[2], body.mpi_communicator()) / a};
       }
     } // namespace
 
@@ -235,18 +214,23 @@ namespace rollnip
     evaluate_free_end(const SliceBody &body, const double u0)
     {
       FreeEnd result;
-      result.u0                         = u0;
-      result.decay                      = end_decay(body.line_load_profile());
+      result.u0 = u0;
+      result.decay =
+        end_decay(body.line_load_profile(), body.line_load_widths());
       const MPI_Comm              comm  = body.mpi_communicator();
       const std::array<double, 4> bulge = end_face_bulge(body);
       result.bulge                      = bulge[0];
       result.bulge_at = Point<dim>(bulge[1], bulge[2], bulge[3]);
 
-      const auto               &t = body.three_d_parameters();
-      const std::vector<double> z =
-        axial_planes(t.slice_thickness, t.layers, t.axial_grading);
-      const double lowest = -std::numeric_limits<double>::max();
-      BondRecord   shear[2], compression[2], tension[2];
+      const auto  &g = body.parameters_of_mesh().geometry;
+      const double h = g.outer_radius - g.inner_radius;
+      for (unsigned int k = 0; k < 2; ++k)
+        std::tie(result.corner_sigma_rr[k], result.corner_tau_rz[k]) =
+          corner_average(body, (k + 1) * h / 2);
+
+      const std::vector<double> z      = body.node_planes();
+      const double              lowest = -std::numeric_limits<double>::max();
+      BondRecord                shear[2], compression[2], tension[2];
       for (unsigned int k = 0; k < 2; ++k)
         shear[k] = compression[k] = tension[k] = {{lowest, 0, 0, 0, 0, 0, 0}};
       std::vector<double> max_rz(z.size(), 0.), max_shear(z.size(), 0.),

@@ -88,7 +88,15 @@ namespace rollnip
           << "end_bulge_r_mm = " << b[0] << '\n'
           << "end_bulge_theta_deg = " << b[1] << '\n'
           << "bond_shear_peak_MPa = " << result.shear_peak.shear() << '\n'
-          << "bond_shear_middle_MPa = " << result.shear_middle.shear() << '\n';
+          << "bond_shear_middle_MPa = " << result.shear_middle.shear() << '\n'
+          << "bond_corner_sigma_rr_mean_half_h_MPa = "
+          << result.corner_sigma_rr[0] << '\n'
+          << "bond_corner_sigma_rr_mean_h_MPa = " << result.corner_sigma_rr[1]
+          << '\n'
+          << "bond_corner_tau_rz_mean_half_h_MPa = " << result.corner_tau_rz[0]
+          << '\n'
+          << "bond_corner_tau_rz_mean_h_MPa = " << result.corner_tau_rz[1]
+          << '\n';
       write_stress(out, "bond_shear_peak", result.shear_peak);
       write_stress(out, "bond_tension_peak", result.tension_peak);
       write_stress(out, "bond_tension_middle", result.tension_middle);

@@ -108,7 +108,7 @@ namespace rollnip
               for (unsigned int c = 0; c < dim; ++c)
                 lambda += n[c] * reactions[node.dofs[c]];
             }
-          if (lambda - active_set_scale * g > 0)
+          if (lambda - active_set_scale * node.weight * g > 0)
             next.insert(x_dof);
         }
       const bool changed = next != active;

@@ -1,8 +1,10 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_dgp.h>
+#include <deal.II/fe/fe_dgp_nonparametric.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
@@ -21,6 +23,23 @@ namespace rollnip
   {
     namespace
     {
+      /// The displacement's element: FE_Q(degree).
+      std::unique_ptr<FiniteElement<dim>>
+      displacement_element(const unsigned int degree)
+      {
+        return std::make_unique<FE_Q<dim>>(degree);
+      }
+
+      /// The pressure's: P0, or P1 as in 2D nonparametric, which on the
+      /// curved (non-affine) Q2 cells still holds the linear functions.
+      std::unique_ptr<FiniteElement<dim>>
+      pressure_element(const unsigned int degree)
+      {
+        if (degree == 1)
+          return std::make_unique<FE_DGP<dim>>(0);
+        return std::make_unique<FE_DGPNonparametric<dim>>(1);
+      }
+
       Point<2>
       in_plane(const Point<dim> &x)
       {
@@ -135,7 +154,9 @@ namespace rollnip
         , parameters(parameters)
         , three_d(three_d)
         , triangulation(communicator)
-        , fe(FE_Q<dim>(1), dim, FE_DGP<dim>(0), 1)
+        , degree(parameters.discretization.displacement_degree())
+        , mapping(std::make_unique<MappingQ<dim>>(degree))
+        , fe(*displacement_element(degree), dim, *pressure_element(degree), 1)
         , dof_handler(triangulation)
         , law(make_layer_law<dim>(parameters.material,
                                   parameters.material.n_layers() - 1))
@@ -145,10 +166,12 @@ namespace rollnip
         , augmentation(iterative ? 10. * law->shear_modulus() : 0.)
         , core(three_d.core_deflection)
     {
-      AssertThrow(parameters.discretization.element ==
-                    Parameters::Element::q1_p0,
-                  ExcMessage("Three d: Discretization/Element must be Q1-P0 "
-                             "(Q2-P1 is not available in 3D yet)"));
+      // The block preconditioner's Schur diagonal and rigid-body modes are
+      // those of Q1-P0 (vertex dofs, one pressure per cell).
+      AssertThrow(!iterative || degree == 1,
+                  ExcMessage("Three d: Linear solver/Method = gmres-amg "
+                             "needs Discretization/Element = Q1-P0; use "
+                             "the direct method with Q2-P1"));
       AssertThrow(parameters.material.theory == Parameters::Theory::nonlinear,
                   ExcMessage("Three d: Material/Theory must be nonlinear"));
       make_slice_mesh(parameters,
@@ -157,9 +180,11 @@ namespace rollnip
                       three_d.layers,
                       triangulation,
                       three_d.axial_grading);
-      // c of the active-set rule: a nodal force per mm of gap of the order
-      // of the cover's stiffness; any c > 0 gives the same converged set.
-      active_set_scale = law->shear_modulus() * three_d.slice_thickness;
+      // c of the active-set rule, a pressure per mm of gap of the order of
+      // the cover's stiffness G / h; any c > 0 gives the same converged set.
+      active_set_scale =
+        law->shear_modulus() /
+        (parameters.geometry.outer_radius - parameters.geometry.inner_radius);
       setup_system();
       collect_surface_nodes();
       collect_bonded_nodes();
@@ -197,19 +222,11 @@ namespace rollnip
     void
     SliceBody::collect_surface_nodes()
     {
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (!cell->is_artificial())
-          for (const auto &face : cell->face_iterators())
-            if (face->at_boundary() &&
-                face->boundary_id() == SliceIds::outer_arc)
-              for (unsigned int v = 0; v < face->n_vertices(); ++v)
-                {
-                  SurfaceNode node;
-                  for (unsigned int c = 0; c < dim; ++c)
-                    node.dofs[c] = face->vertex_dof_index(v, c);
-                  node.X                = face->vertex(v);
-                  surface[node.dofs[0]] = node;
-                }
+      surface = boundary_nodes(SliceIds::outer_arc);
+      const TrilinosWrappers::MPI::Vector weight =
+        lumped_areas(SliceIds::outer_arc, false);
+      for (auto &[x_dof, node] : surface)
+        node.weight = weight[x_dof];
     }
 
     Point<dim>
@@ -247,8 +264,9 @@ namespace rollnip
         preconditioner_matrix = 0;
       TrilinosWrappers::MPI::Vector raw(owned, communicator),
         condensed(owned, communicator);
-      const QGauss<dim>                    quadrature(2);
-      FEValues<dim>                        fv(fe,
+      const QGauss<dim>                    quadrature(degree + 1);
+      FEValues<dim>                        fv(*mapping,
+                       fe,
                        quadrature,
                        update_gradients | update_values | update_JxW_values);
       const unsigned int                   n = fe.n_dofs_per_cell();

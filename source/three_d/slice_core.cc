@@ -23,18 +23,15 @@ namespace rollnip
                              "conditions/Far edge = free, or symmetry with a "
                              "sector angle of 180 deg (the core moves along "
                              "x1)"));
+      // Every node of the bond, Q2's edge and face nodes too: the bent
+      // core carries all the displacement dofs at R1.
       double largest = 0;
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (!cell->is_artificial())
-          for (const auto &face : cell->face_iterators())
-            if (face->at_boundary() &&
-                face->boundary_id() == SliceIds::inner_arc)
-              for (unsigned int v = 0; v < face->n_vertices(); ++v)
-                {
-                  const double deflection = core.value(face->vertex(v)[2]);
-                  bonded[face->vertex_dof_index(v, 0)] = deflection;
-                  largest = std::max(largest, std::abs(deflection));
-                }
+      for (const auto &[x_dof, node] : boundary_nodes(SliceIds::inner_arc))
+        {
+          const double deflection = core.value(node.X[2]);
+          bonded[x_dof]           = deflection;
+          largest                 = std::max(largest, std::abs(deflection));
+        }
       core_amplitude = Utilities::MPI::max(largest, communicator);
     }
 

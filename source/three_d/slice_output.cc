@@ -11,30 +11,66 @@ namespace rollnip
 {
   namespace three_d
   {
-    std::vector<std::pair<double, double>>
-    SliceBody::line_load_profile() const
+    std::vector<double>
+    SliceBody::node_planes() const
     {
-      // Plane j of nodes at z_j; its share of the face is half the layers
-      // on either side (axial_grading.h).
       const std::vector<double> z = axial_planes(three_d.slice_thickness,
                                                  three_d.layers,
                                                  three_d.axial_grading);
-      const unsigned int        n = three_d.layers;
-      std::vector<double>       f(n + 1, 0.);
+      if (degree == 1)
+        return z;
+      std::vector<double> planes = {z.front()};
+      for (unsigned int j = 1; j < z.size(); ++j)
+        {
+          planes.push_back((z[j - 1] + z[j]) / 2.);
+          planes.push_back(z[j]);
+        }
+      return planes;
+    }
+
+    std::vector<double>
+    SliceBody::line_load_widths() const
+    {
+      // The row sums of the 1D mass matrix along z: a plane's share of
+      // the face, so that sum q_j w_j is the total force.
+      const std::vector<double> z = axial_planes(three_d.slice_thickness,
+                                                 three_d.layers,
+                                                 three_d.axial_grading);
+      std::vector<double>       widths(node_planes().size(), 0.);
+      for (unsigned int j = 0; j + 1 < z.size(); ++j)
+        {
+          const double h = z[j + 1] - z[j];
+          if (degree == 1)
+            {
+              widths[j] += h / 2;
+              widths[j + 1] += h / 2;
+            }
+          else
+            {
+              widths[2 * j] += h / 6;
+              widths[2 * j + 1] += 2 * h / 3;
+              widths[2 * j + 2] += h / 6;
+            }
+        }
+      return widths;
+    }
+
+    std::vector<std::pair<double, double>>
+    SliceBody::line_load_profile() const
+    {
+      const std::vector<double> planes = node_planes();
+      const std::vector<double> widths = line_load_widths();
+      std::vector<double>       f(planes.size(), 0.);
       for (const auto &[x_dof, node] : surface)
         if (active.count(x_dof) && owned.is_element(x_dof))
-          f[nearest_plane(z, node.X[2])] += reactions[x_dof];
+          f[nearest_plane(planes, node.X[2])] += reactions[x_dof];
       const std::vector<double> local = f;
       Utilities::MPI::sum(ArrayView<const double>(local),
                           communicator,
                           ArrayView<double>(f));
       std::vector<std::pair<double, double>> profile;
-      for (unsigned int j = 0; j <= n; ++j)
-        {
-          const double width =
-            ((j < n ? z[j + 1] : z[j]) - (j > 0 ? z[j - 1] : z[j])) / 2.;
-          profile.emplace_back(z[j], -2. * f[j] / width);
-        }
+      for (unsigned int j = 0; j < planes.size(); ++j)
+        profile.emplace_back(planes[j], -2. * f[j] / widths[j]);
       return profile;
     }
 
@@ -54,7 +90,7 @@ namespace rollnip
       Vector<float> rank(triangulation.n_active_cells());
       rank = Utilities::MPI::this_mpi_process(communicator);
       out.add_data_vector(rank, "mpi_rank");
-      out.build_patches();
+      out.build_patches(*mapping, degree);
       out.write_vtu_with_pvtu_record(
         directory + "/", name, counter, communicator, 2);
     }

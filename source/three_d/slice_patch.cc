@@ -26,8 +26,8 @@ namespace rollnip
               }
     }
 
-    ContactPatch
-    SliceBody::contact_patch() const
+    TrilinosWrappers::MPI::Vector
+    SliceBody::vertex_areas() const
     {
       // Each node's share of the deformed outer surface: a quarter of the
       // area of every face it is a vertex of (half the cross product of
@@ -47,6 +47,14 @@ namespace rollnip
       owned_area.compress(VectorOperation::add);
       TrilinosWrappers::MPI::Vector area(owned, relevant, communicator);
       area = owned_area;
+      return area;
+    }
+
+    ContactPatch
+    SliceBody::contact_patch() const
+    {
+      const TrilinosWrappers::MPI::Vector area =
+        degree == 1 ? vertex_areas() : lumped_areas(SliceIds::outer_arc, true);
 
       ContactPatch                           patch;
       std::vector<std::pair<double, double>> pressures; ///< (p, z), owned
@@ -83,8 +91,11 @@ namespace rollnip
         Utilities::MPI::max(patch.half_chord_middle, communicator);
       patch.half_chord_far =
         Utilities::MPI::max(patch.half_chord_far, communicator);
+      // consistent_line_load() inverts the mass matrix of linear elements;
+      // Q2's lumped value is exact for a q uniform along the axis.
       patch.line_load_middle =
-        consistent_line_load(line_load_profile()).front().second;
+        degree == 1 ? consistent_line_load(line_load_profile()).front().second
+                    : line_load_profile().front().second;
       return patch;
     }
 

@@ -46,7 +46,8 @@ namespace rollnip
             << "# rollnip 3D slice summary (lengths mm, loads N/mm)\n"
             << "status = converged\n"
             << "dimension = 3\n"
-            << "element = Q1-P0\n"
+            << "element = "
+            << (body.displacement_degree() == 1 ? "Q1-P0" : "Q2-P1") << '\n'
             << "mesh_level = " << parameters.mesh.global_refinements << '\n'
             << "n_cells = " << body.n_cells() << '\n'
             << "n_dofs = " << body.n_dofs() << '\n'

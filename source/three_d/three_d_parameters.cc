@@ -19,7 +19,9 @@ namespace rollnip
                          "the builtin mesh of Geometry and Mesh extruded "
                          "along the roll axis, pressed by the indenter of "
                          "Contact at the approaches u0 of Contact/Values "
-                         "(Mode = indentation), Q1-P0");
+                         "(Mode = indentation), Q1-P0 or Q2-P1 as "
+                         "Discretization/Element (Q2-P1 with the direct "
+                         "linear solver)");
       declare_documented(prm,
                          "Slice thickness",
                          "1",

@@ -13,7 +13,8 @@
 # the timings and the process count) with numdiff, relative 1e-8 (Newton
 # stops at a relative residual of 1e-10). METHOD (default direct) is
 # Linear solver/Method of both runs: gmres-amg checks the iterative path,
-# whose AMG hierarchy depends on the partition.
+# whose AMG hierarchy depends on the partition. The environment variable
+# ELEMENT (Q1-P0 or Q2-P1), if set, is Discretization/Element of both.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
@@ -41,6 +42,9 @@ make_prm()
   printf 'subsection Three d\n  set Layers = 2\nend\n' >> "$1"
   printf 'subsection Output\n  set Directory = %s\nend\n' "$2" >> "$1"
   printf 'subsection Linear solver\n  set Method = %s\nend\n' "$method" >> "$1"
+  if [ -n "${ELEMENT:-}" ]; then
+    printf 'subsection Discretization\n  set Element = %s\nend\n' "$ELEMENT" >> "$1"
+  fi
 }
 make_prm serial.prm out_serial
 make_prm parallel.prm out_parallel

@@ -44,10 +44,12 @@ namespace rollnip
     };
 
     /// The decay of the profile @p profile ((z [mm], q [N/mm]) from z = 0
-    /// to z = L, each q the nodal force over the plane's tributary
-    /// length, half a layer at both ends).
+    /// to z = L, each q the nodal force over the plane's share @p widths
+    /// of the length (SliceBody::line_load_widths()); empty @p widths:
+    /// half the distances to the neighbouring planes (Q1)).
     EndDecay
-    end_decay(const std::vector<std::pair<double, double>> &profile);
+    end_decay(const std::vector<std::pair<double, double>> &profile,
+              const std::vector<double> &widths = std::vector<double>());
 
     /// The bond stresses at one bonded node [MPa], from its reaction over
     /// its lumped area on the core (the bonded surface does not move, so
@@ -79,6 +81,15 @@ namespace rollnip
       BondStress shear_peak, shear_middle;
       BondStress compression_peak, compression_middle;
       BondStress tension_peak, tension_middle;
+      /// The bond traction at the bonded corner (r = R1, theta = 0, z = L)
+      /// averaged with the tent weight w = (1 - (L - z) / s)+ (1 - R1
+      /// theta / s)+ for s = h / 2 and s = h (h = R2 - R1): sigma_rr and
+      /// tau_rz [MPa]. The weighted sum of the consistent nodal reactions
+      /// over that of the lumped areas is the exact w-weighted mean of the
+      /// discrete traction, so it converges where the nodal peak at the
+      /// (singular) corner grows with refinement.
+      std::array<double, 2> corner_sigma_rr = {{0, 0}};
+      std::array<double, 2> corner_tau_rz   = {{0, 0}};
       /// Per plane of bonded nodes (last approach): z [mm], the largest
       /// |tau_rz|, bond shear, sigma_rr and the smallest sigma_rr [MPa].
       std::vector<std::array<double, 5>> bond_along_axis;

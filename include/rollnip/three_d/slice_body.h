@@ -5,6 +5,7 @@
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -66,17 +67,20 @@ namespace rollnip
                         const Parameters::ThreeD &three_d);
 
     /**
-     * The cover as a 3D body (slice_mesh.h): Q1-P0 (FE_Q(1)^3 x FE_DGP(0)),
-     * total Lagrangian, the surface layer's law from make_layer_law<3>()
-     * (incompressible or compressible), pressed by the rigid indenter
-     * (a cylinder parallel to the roll axis, or a plane) of Contact. The
-     * contact is frictionless and solved by a primal-dual active set on
-     * the nodes of the outer surface inside Newton (semismooth Newton): a
-     * node is active when its normal contact force minus c times its gap
-     * is positive, and an active node's Newton update is constrained to
-     * the linearised gap, g + n . du = 0. Conditions: bonded at R1,
-     * u_theta = 0 on the plane through the nip, the far edge as Boundary
-     * conditions/Far edge, u_z = 0 on z = 0 and (Far face) on z = L.
+     * The cover as a 3D body (slice_mesh.h): Discretization/Element selects
+     * Q1-P0 (FE_Q(1)^3 x FE_DGP(0), 2x2x2 Gauss) or Q2-P1 (FE_Q(2)^3 x
+     * FE_DGPNonparametric(1), 3x3x3 Gauss, MappingQ(2) on the cylindrical
+     * manifold), as the 2D body does; total Lagrangian, the surface layer's law
+     * from make_layer_law<3>() (incompressible or compressible), pressed by the
+     * rigid indenter (a cylinder parallel to the roll axis, or a plane) of
+     * Contact. The contact is frictionless and solved by a primal-dual active
+     * set on the nodes of the outer surface inside Newton (semismooth Newton):
+     * a node is active when its normal contact force over its lumped area (the
+     * row sum of the face mass matrix) minus c times its gap is positive, and
+     * an active node's Newton update is constrained to the linearised gap, g +
+     * n . du = 0. Conditions: bonded at R1, u_theta = 0 on the plane through
+     * the nip, the far edge as Boundary conditions/Far edge, u_z = 0 on z = 0
+     * and (Far face) on z = L.
      */
     class SliceBody
     {
@@ -92,10 +96,30 @@ namespace rollnip
       solve(const double u0);
 
       /// The line load along the roll axis: (z [mm], q [N/mm]) at every
-      /// plane of surface nodes, the full nip's normal force of the plane's
+      /// plane of surface nodes (Q2: vertex and mid-layer planes), the
+      /// full nip's normal force of the plane's
       /// active nodes over the plane's share of the slice length.
       std::vector<std::pair<double, double>>
       line_load_profile() const;
+
+      /// The z of the planes of nodes along the axis [mm]: the layer
+      /// boundaries, and with Q2 the layers' middles too.
+      std::vector<double>
+      node_planes() const;
+
+      /// The share of the slice length [mm] of every plane of
+      /// line_load_profile(): half the layers on either side (Q1), the
+      /// lumped Q2 weights h/6 + h/6 at a vertex plane and 2h/3 at a
+      /// mid-layer plane (Q2). They sum to the slice thickness.
+      std::vector<double>
+      line_load_widths() const;
+
+      /// 1 (Q1-P0) or 2 (Q2-P1).
+      unsigned int
+      displacement_degree() const
+      {
+        return degree;
+      }
 
       /// Peak pressure and the contact's extent at the last approach.
       ContactPatch
@@ -148,21 +172,41 @@ namespace rollnip
       {
         return communicator;
       }
+      const Parameters::AllParameters &
+      parameters_of_mesh() const
+      {
+        return parameters;
+      }
       const Parameters::ThreeD &
       three_d_parameters() const
       {
         return three_d;
       }
 
-    private:
+      /// Read access for the free-end measures (free_end.h) too.
       /// The three displacement dofs and the reference position of a
-      /// vertex of the outer surface.
+      /// node (a support point of the displacement) of a boundary.
       struct SurfaceNode
       {
         std::array<types::global_dof_index, dim> dofs;
         Point<dim>                               X;
+        /// Lumped (row-sum) reference area int phi dA of the node on the
+        /// outer surface [mm^2], positive for Q1 and Q2; 0 elsewhere.
+        double weight = 0;
       };
 
+      /// Every node on the boundary @p id of the locally owned and ghost
+      /// cells, by x dof (slice_nodes.cc): all the displacement dofs there,
+      /// at their support points on the mapped (curved) geometry.
+      std::map<types::global_dof_index, SurfaceNode>
+      boundary_nodes(const types::boundary_id id) const;
+      /// The lumped areas int phi_i dA of the nodes on boundary @p id over
+      /// the reference (@p deformed false) or current surface, by x dof,
+      /// ghosted [mm^2] (slice_nodes.cc).
+      TrilinosWrappers::MPI::Vector
+      lumped_areas(const types::boundary_id id, const bool deformed) const;
+
+    private:
       void
       setup_system();
       void
@@ -198,15 +242,20 @@ namespace rollnip
       double
       active_gap(const double u0) const;
 
-      MPI_Comm                                      communicator;
-      const Parameters::AllParameters               parameters;
-      const Parameters::ThreeD                      three_d;
-      parallel::distributed::Triangulation<dim>     triangulation;
+      MPI_Comm                                  communicator;
+      const Parameters::AllParameters           parameters;
+      const Parameters::ThreeD                  three_d;
+      parallel::distributed::Triangulation<dim> triangulation;
+      /// 1 (Q1-P0) or 2 (Q2-P1): Discretization/Element.
+      const unsigned int degree;
+      /// MappingQ(degree): the Q2 cells follow the cylindrical manifold.
+      const std::unique_ptr<const Mapping<dim>>     mapping;
       FESystem<dim>                                 fe;
       DoFHandler<dim>                               dof_handler;
       const std::unique_ptr<const MaterialLaw<dim>> law;
       std::unique_ptr<CounterSurface>               indenter;
-      /// c of the active-set rule, force / length [N/mm].
+      /// c of the active-set rule, pressure / gap [MPa/mm]: a node is
+      /// active while its force over its lumped area exceeds c g.
       double active_set_scale;
 
       IndexSet                                       owned, relevant;
@@ -251,10 +300,14 @@ namespace rollnip
 
       // The contact patch (slice_patch.cc).
       /// The x dofs of the four vertices of every locally owned face on
-      /// the outer surface.
+      /// the outer surface (Q1: its nodal areas on the deformed surface).
       void
       collect_surface_faces();
       std::vector<std::array<types::global_dof_index, 4>> surface_faces;
+      /// Q1: each outer node's share of the deformed outer surface, a
+      /// quarter of its faces' areas, by x dof, ghosted [mm^2].
+      TrilinosWrappers::MPI::Vector
+      vertex_areas() const;
     };
   } // namespace three_d
 } // namespace rollnip
