@@ -36,9 +36,12 @@ namespace rollnip
     namespace
     {
       /// The numbers of the comma-separated @p text; a word that is not a
-      /// number is refused naming Rolling/@p entry.
+      /// number is refused naming @p prefix @p entry (the subsection it is
+      /// read in).
       std::vector<double>
-      numbers_of(const std::string &text, const std::string &entry)
+      numbers_of(const std::string &text,
+                 const std::string &entry,
+                 const std::string &prefix = "Rolling/")
       {
         std::vector<double> v;
         for (const auto &word : Utilities::split_string_list(text, ','))
@@ -56,7 +59,7 @@ namespace rollnip
                 end = 0;
               }
             AssertThrow(end == word.size() && std::isfinite(x),
-                        ExcMessage("Rolling/" + entry + ": '" + word +
+                        ExcMessage(prefix + entry + ": '" + word +
                                    "' is not a number"));
             v.push_back(x);
           }
@@ -66,31 +69,34 @@ namespace rollnip
       /// The per-layer groups of @p text, separated by ';' (one group: all
       /// layers).
       std::vector<std::vector<double>>
-      layer_groups(const std::string &text, const std::string &entry)
+      layer_groups(const std::string &text,
+                   const std::string &entry,
+                   const std::string &prefix)
       {
         std::vector<std::vector<double>> groups;
         for (const auto &group : Utilities::split_string_list(text, ';'))
-          groups.push_back(numbers_of(group, entry));
+          groups.push_back(numbers_of(group, entry, prefix));
         return groups;
       }
 
       /// One value per layer (or one for all), each in (0, inf) unless
-      /// @p zero_allowed.
+      /// @p zero_allowed; errors name @p prefix @p entry.
       std::vector<double>
       per_layer(const std::string &text,
                 const std::string &entry,
                 const unsigned int n_layers,
+                const std::string &prefix,
                 const bool         zero_allowed = false)
       {
-        const auto v = numbers_of(text, entry);
+        const auto v = numbers_of(text, entry, prefix);
         AssertThrow(v.size() == 1 || v.size() == n_layers,
-                    ExcMessage("Rolling/" + entry + " has " +
+                    ExcMessage(prefix + entry + " has " +
                                std::to_string(v.size()) +
                                " values: give one, or one per layer (" +
                                std::to_string(n_layers) + ")"));
         for (const double x : v)
           AssertThrow(zero_allowed ? x >= 0 : x > 0,
-                      ExcMessage("Rolling/" + entry + " must be " +
+                      ExcMessage(prefix + entry + " must be " +
                                  (zero_allowed ? "non-negative" : "positive") +
                                  ", not " + number(x)));
         return v;
@@ -263,35 +269,42 @@ namespace rollnip
 
     namespace
     {
-      /// The hysteresis of every layer from the entries of @p model.
+      /// The hysteresis of every layer from the entries of @p model;
+      /// errors name the entries under @p prefix.
       std::vector<ViscousLayer>
       viscous_layers(ParameterHandler       &prm,
                      const ViscoelasticModel model,
-                     const unsigned int      n_layers)
+                     const unsigned int      n_layers,
+                     const std::string      &prefix)
       {
         std::vector<ViscousLayer> layers;
         if (model == ViscoelasticModel::prony)
           {
-            const auto g =
-              layer_groups(prm.get("Relaxation moduli"), "Relaxation moduli");
-            const auto tau =
-              layer_groups(prm.get("Relaxation times"), "Relaxation times");
+            const auto g   = layer_groups(prm.get("Relaxation moduli"),
+                                        "Relaxation moduli",
+                                        prefix);
+            const auto tau = layer_groups(prm.get("Relaxation times"),
+                                          "Relaxation times",
+                                          prefix);
             AssertThrow(g.size() == tau.size() &&
                           (g.size() == 1 || g.size() == n_layers),
-                        ExcMessage("Rolling/Relaxation moduli and Relaxation "
+                        ExcMessage(prefix +
+                                   "Relaxation moduli and Relaxation "
                                    "times need one group, or one per layer (" +
                                    std::to_string(n_layers) +
                                    "), separated by ';'"));
             for (unsigned int l = 0; l < g.size(); ++l)
               {
                 AssertThrow(!g[l].empty() && g[l].size() == tau[l].size(),
-                            ExcMessage("Rolling/Relaxation moduli and "
+                            ExcMessage(prefix +
+                                       "Relaxation moduli and "
                                        "Relaxation times need as many values "
                                        "each (group " +
                                        std::to_string(l + 1) + ")"));
                 for (unsigned int i = 0; i < g[l].size(); ++i)
                   AssertThrow(g[l][i] >= 0 && tau[l][i] > 0,
-                              ExcMessage("Rolling/Relaxation moduli must be "
+                              ExcMessage(prefix +
+                                         "Relaxation moduli must be "
                                          ">= 0 and Relaxation times > 0 "
                                          "(group " +
                                          std::to_string(l + 1) + ")"));
@@ -304,14 +317,18 @@ namespace rollnip
           tau = per_layer(prm.get("Retardation time"),
                           "Retardation time",
                           n_layers,
+                          prefix,
                           true);
         else
           {
-            const auto tan_delta =
-              per_layer(prm.get("Loss tangent"), "Loss tangent", n_layers);
-            auto f = per_layer(prm.get("Loss tangent frequency"),
+            const auto tan_delta = per_layer(prm.get("Loss tangent"),
+                                             "Loss tangent",
+                                             n_layers,
+                                             prefix);
+            auto       f         = per_layer(prm.get("Loss tangent frequency"),
                                "Loss tangent frequency",
-                               n_layers);
+                               n_layers,
+                               prefix);
             for (unsigned int l = 0; l < tan_delta.size(); ++l)
               tau.push_back(retardation_time_from_loss_tangent(
                 tan_delta[l], f.size() == 1 ? f[0] : f[l]));
@@ -362,23 +379,38 @@ namespace rollnip
       prm.leave_subsection();
     }
 
+    namespace
+    {
+      /// The cover's hysteresis and thermal entries of the current
+      /// subsection into @p r; errors name them under @p prefix.
+      void
+      parse_cover_entries(Rolling           &r,
+                          ParameterHandler  &prm,
+                          const unsigned int n_layers,
+                          const std::string &prefix)
+      {
+        const std::string m = prm.get("Viscoelastic model");
+        r.model             = m == "prony"          ? ViscoelasticModel::prony
+                              : m == "kelvin-voigt" ? ViscoelasticModel::kelvin_voigt
+                                                    : ViscoelasticModel::loss_tangent;
+        r.layers            = viscous_layers(prm, r.model, n_layers, prefix);
+        r.conductivity      = per_layer(prm.get("Thermal conductivity"),
+                                   "Thermal conductivity",
+                                   n_layers,
+                                   prefix);
+        r.heat_transfer     = prm.get_double("Heat transfer coefficient");
+        r.ambient           = prm.get_double("Ambient temperature");
+        r.core              = prm.get_double("Core temperature");
+        r.core_condition    = prm.get("Core thermal condition") == "insulated"
+                                ? CoreThermalCondition::insulated
+                                : CoreThermalCondition::fixed_temperature;
+      }
+    } // namespace
+
     void
     Rolling::parse_cover(ParameterHandler &prm, const unsigned int n_layers)
     {
-      const std::string m = prm.get("Viscoelastic model");
-      model               = m == "prony"          ? ViscoelasticModel::prony
-                            : m == "kelvin-voigt" ? ViscoelasticModel::kelvin_voigt
-                                                  : ViscoelasticModel::loss_tangent;
-      layers              = viscous_layers(prm, model, n_layers);
-      conductivity        = per_layer(prm.get("Thermal conductivity"),
-                               "Thermal conductivity",
-                               n_layers);
-      heat_transfer       = prm.get_double("Heat transfer coefficient");
-      ambient             = prm.get_double("Ambient temperature");
-      core                = prm.get_double("Core temperature");
-      core_condition      = prm.get("Core thermal condition") == "insulated"
-                              ? CoreThermalCondition::insulated
-                              : CoreThermalCondition::fixed_temperature;
+      parse_cover_entries(*this, prm, n_layers, "Rolling/");
     }
 
     void
@@ -388,7 +420,7 @@ namespace rollnip
       if (prm.get("Hysteresis") == "own")
         {
           mate = std::make_shared<Rolling>();
-          mate->parse_cover(prm, n_layers);
+          parse_cover_entries(*mate, prm, n_layers, "Rolling/Mating roll/");
         }
       else
         {

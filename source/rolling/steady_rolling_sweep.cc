@@ -43,8 +43,10 @@ namespace rollnip
     s.layout.layer_radii     = layer_radii(parameters);
     s.layout.fine_half_angle = 2.5 * theta0;
     s.layout.fine_cells      = 2 * (rolling.full_nip_cells / 2);
-    s.layout.radial_cells    = rolling.full_radial_cells;
-    s.layout.radial_grading  = 0.3;
+    // The steps beyond the fine zone refine with it (1.05 at 100 cells).
+    s.layout.growth         = 1 + 5. / s.layout.fine_cells;
+    s.layout.radial_cells   = rolling.full_radial_cells;
+    s.layout.radial_grading = 0.3;
     return s;
   }
 

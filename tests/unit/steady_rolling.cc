@@ -195,14 +195,18 @@ main(int argc, char **argv)
                 << std::endl;
       F_r.push_back(r.resistance_energy);
       // The discrete moment balance is exact; the dissipation integrated
-      // along the circles carries the discretisation error: measured 1.3 %
-      // to 1.6 % above V tau / b = 0.1, 2.2 % to 2.7 % below, where the
-      // moment is a small difference of large ones (the energy route is
-      // within 1 % of the first-order one there).
+      // along the circles carries the discretisation error. Measured
+      // moment / dissipation 1.000 to 1.003 from V tau / b = 0.1 to 10,
+      // 1.010 and 1.015 at 0.003 and 0.01 (where the torque is a small
+      // difference of large moments and the overstress at a sample lags
+      // by half a cell); with twice the cells along the circles (growth
+      // 1.05 -> 1.025 beyond the fine zone) 0.9997 to 1.0011.
+      const double balance = ratio >= 0.1 ? 0.005 : 0.02;
       checker.check(std::abs(r.resistance_moment / r.resistance_energy - 1) <
-                      0.03,
+                      balance,
                     "energy balance: moment / dissipation = " +
-                      testing::num(r.resistance_moment / r.resistance_energy));
+                      testing::num(r.resistance_moment / r.resistance_energy) +
+                      " (within " + testing::num(100 * balance) + " %)");
       if (ratio <= 0.01)
         checker.check(std::abs(r.resistance_energy / fo - 1) < 0.03,
                       "first order route within 3 %: " +
