@@ -77,6 +77,7 @@ namespace rollnip
      * the linearised gap, g + n . du = 0. Conditions: bonded at R1,
      * u_theta = 0 on the plane through the nip, the far edge as Boundary
      * conditions/Far edge, u_z = 0 on z = 0 and (Far face) on z = L.
+     * A layered cover: every cell has its layer's law (by material id).
      */
     class SliceBody
     {
@@ -255,6 +256,11 @@ namespace rollnip
       void
       collect_surface_faces();
       std::vector<std::array<types::global_dof_index, 4>> surface_faces;
+
+      /// Every cover layer's law, by the cells' material id (0: on the
+      /// core); law above is the surface layer's, the scale of the contact
+      /// rule and of the iterative solver.
+      std::vector<std::unique_ptr<const MaterialLaw<dim>>> layer_laws;
     };
   } // namespace three_d
 } // namespace rollnip
