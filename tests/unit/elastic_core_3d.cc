@@ -183,8 +183,10 @@ main(int argc, char **argv)
                 << " N; rigid core: q(0) = " << q_rigid[0].second
                 << " N/mm, force " << F_rigid << " N" << std::endl;
     }
-  check.check(std::abs(force_gap[1]) < 2e-3 && std::abs(q0_gap[1]) < 2e-3,
-              "E x 1e3: the half face's force and q(0) within 0.2 % of the "
+  // At E x 100 the core's deflection (5.6e-3 mm at z = 0) takes 2.2 % off
+  // q(0): a tenth of that is left at E x 1e3.
+  check.check(std::abs(force_gap[1]) < 3e-3 && std::abs(q0_gap[1]) < 3e-3,
+              "E x 1e3: the half face's force and q(0) within 0.3 % of the "
               "rigid core's: " +
                 testing::num(100 * force_gap[1]) + " %, " +
                 testing::num(100 * q0_gap[1]) + " %");
