@@ -2,6 +2,7 @@
 #include <deal.II/fe/component_mask.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <rollnip/three_d/core_tube.h>
 #include <rollnip/three_d/slice_body.h>
 
 #include <cmath>
@@ -51,6 +52,11 @@ namespace rollnip
         AssertThrow(bc[SliceIds::far_edge] == BC::free,
                     ExcMessage("Three d: Boundary conditions/Far edge must "
                                "be fixed, free or symmetry"));
+      if (three_d.elastic_core) // simply supported at the journal
+        {
+          support(CoreIds::journal, 0);
+          support(CoreIds::journal, 1);
+        }
       support(SliceIds::symmetry_edge, 1);
       support(SliceIds::near_face, 2);
       if (three_d.fix_far_face)
@@ -130,6 +136,16 @@ namespace rollnip
     {
       TrilinosWrappers::MPI::Vector du(owned, communicator),
         state(owned, communicator);
+      // A steel core's stresses are differences of terms of order its G,
+      // so its nodal forces carry a round-off that grows with its G over
+      // the cover's (1.3e-10 of the reactions at 8e4, measured): there, a
+      // residual that has stopped falling below 1e-13 times that ratio is
+      // converged.
+      const double floor =
+        three_d.elastic_core
+          ? 1e-13 * layer_laws.back()->shear_modulus() / law->shear_modulus()
+          : 0.;
+      double previous = 1.;
       for (unsigned int it = 0; it < three_d.max_newton_iterations; ++it)
         {
           // The inhomogeneities are the current gaps: rebuilt every step.
@@ -140,10 +156,14 @@ namespace rollnip
               make_constraints(u0);
               assemble();
             }
-          else if (it > 0 && residual_u < 1e-10 && residual_q < 1e-12 &&
+          else if (it > 0 &&
+                   (residual_u < 1e-10 ||
+                    (residual_u < floor && residual_u > 0.5 * previous)) &&
+                   residual_q < 1e-12 &&
                    active_gap(u0) < 1e-10 * parameters.geometry.outer_radius)
             return true;
-          du = 0;
+          previous = residual_u;
+          du       = 0;
           solve_linear(du);
           constraints.distribute(du);
           state = solution;

@@ -13,6 +13,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <rollnip/material/law_factory.h>
+#include <rollnip/three_d/core_tube.h>
 #include <rollnip/three_d/slice_body.h>
 
 #include <cmath>
@@ -174,12 +175,21 @@ namespace rollnip
                              "the direct method with Q2-P1"));
       AssertThrow(parameters.material.theory == Parameters::Theory::nonlinear,
                   ExcMessage("Three d: Material/Theory must be nonlinear"));
-      make_slice_mesh(parameters,
-                      level,
-                      three_d.slice_thickness,
-                      three_d.layers,
-                      triangulation,
-                      three_d.axial_grading);
+      for (unsigned int j = 0; j < parameters.material.n_layers(); ++j)
+        layer_laws.emplace_back(make_layer_law<dim>(parameters.material, j));
+      if (three_d.elastic_core)
+        {
+          check_elastic_core(parameters, three_d);
+          layer_laws.emplace_back(make_core_law(three_d));
+          make_core_tube_mesh(parameters, three_d, level, triangulation);
+        }
+      else
+        make_slice_mesh(parameters,
+                        level,
+                        three_d.slice_thickness,
+                        three_d.layers,
+                        triangulation,
+                        three_d.axial_grading);
       // c of the active-set rule, a pressure per mm of gap of the order of
       // the cover's stiffness G / h; any c > 0 gives the same converged set.
       active_set_scale =
@@ -286,8 +296,8 @@ namespace rollnip
             R = 0;
             fv[u_ex].get_function_gradients(solution, grad_u);
             fv[q_ex].get_function_values(solution, q);
-            const auto [cell_constraint, cell_volume] =
-              add_cell_terms(fv, *law, grad_u, q, K, R);
+            const auto [cell_constraint, cell_volume] = add_cell_terms(
+              fv, *layer_laws[cell->material_id()], grad_u, q, K, R);
             constraint_error += std::abs(cell_constraint);
             cell->get_dof_indices(dofs);
             // The displacement rows only: reactions and their norm.

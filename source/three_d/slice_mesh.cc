@@ -14,17 +14,33 @@ namespace rollnip
 {
   namespace three_d
   {
+    std::vector<double>
+    halved_steps(const std::vector<double> &steps, const unsigned int level)
+    {
+      std::vector<double> result;
+      const unsigned int  n = 1u << level;
+      for (const double s : steps)
+        result.insert(result.end(), n, s / n);
+      return result;
+    }
+
     namespace
     {
-      /// Every step of @p steps cut into 2^level equal ones.
-      std::vector<double>
-      halved(const std::vector<double> &steps, const unsigned int level)
+
+      /// Every cell's material id: the cover layer (0 on the core) its
+      /// centre's distance from the axis lies in. radial_steps() puts every
+      /// interface on a cell boundary, so no cell straddles two layers.
+      void
+      set_slice_layer_ids(const Parameters::AllParameters &parameters,
+                          Triangulation<dim>              &triangulation)
       {
-        std::vector<double> result;
-        const unsigned int  n = 1u << level;
-        for (const double s : steps)
-          result.insert(result.end(), n, s / n);
-        return result;
+        const std::vector<double> radii = layer_radii(parameters);
+        for (const auto &cell : triangulation.active_cell_iterators())
+          {
+            const Point<dim> c = cell->center();
+            cell->set_material_id(
+              layer_at_radius(radii, std::hypot(c[0], c[1])));
+          }
       }
     } // namespace
 
@@ -39,13 +55,11 @@ namespace rollnip
       AssertThrow(parameters.mesh.source == Parameters::MeshSource::builtin,
                   ExcMessage("Three d: Mesh/Source must be builtin (the "
                              "slice extrudes the builtin sector annulus)"));
-      AssertThrow(parameters.material.n_layers() == 1,
-                  ExcMessage("Three d: Material/Layer thicknesses: layered "
-                             "covers are not available in 3D yet"));
       const auto                            &g     = parameters.geometry;
       const std::vector<std::vector<double>> steps = {
-        halved(radial_steps(parameters, parameters.mesh.radial_grading), level),
-        halved(coarse_circumferential_steps(parameters), level),
+        halved_steps(radial_steps(parameters, parameters.mesh.radial_grading),
+                     level),
+        halved_steps(coarse_circumferential_steps(parameters), level),
         axial_steps(thickness, layers, axial_grading)};
       // (r, theta, z) box; colorize gives ids 0..5 in the order of SliceIds.
       Triangulation<dim> coarse;
@@ -61,6 +75,7 @@ namespace rollnip
         },
         coarse);
       coarse.set_all_manifold_ids(0);
+      set_slice_layer_ids(parameters, coarse);
       triangulation.copy_triangulation(coarse);
       Tensor<1, dim> axis;
       axis[2] = 1.;

@@ -1,6 +1,7 @@
 #include <deal.II/base/timer.h>
 
 #include <rollnip/output/atomic_file.h>
+#include <rollnip/three_d/core_tube.h>
 #include <rollnip/three_d/free_end.h>
 #include <rollnip/three_d/load_control.h>
 #include <rollnip/three_d/slice_body.h>
@@ -32,14 +33,15 @@ namespace rollnip
     }
 
     void
-    write_summary(const std::string               &path,
-                  const three_d::SliceBody        &body,
-                  const Parameters::AllParameters &parameters,
-                  const Parameters::ThreeD        &three_d,
-                  const three_d::SliceNip         &nip,
-                  const double                     seconds,
-                  const unsigned int               processes,
-                  const three_d::FreeEnd          *free_end)
+    write_summary(const std::string                            &path,
+                  const three_d::SliceBody                     &body,
+                  const Parameters::AllParameters              &parameters,
+                  const Parameters::ThreeD                     &three_d,
+                  const three_d::SliceNip                      &nip,
+                  const double                                  seconds,
+                  const unsigned int                            processes,
+                  const three_d::FreeEnd                       *free_end,
+                  const std::vector<std::pair<double, double>> &bending)
     {
       write_atomically(path, [&](std::ostream &out) {
         out << std::setprecision(8)
@@ -65,6 +67,12 @@ namespace rollnip
             << "wall_time_s = " << seconds << '\n';
         if (free_end)
           three_d::write_free_end_summary(out, *free_end);
+        if (!bending.empty()) // the elastic core's v at z = 0 and the end
+          out << "core = elastic\n"
+              << "core_deflection_middle_mm = " << bending.front().second
+              << '\n'
+              << "core_deflection_cover_end_mm = "
+              << bending[three_d.layers].second << '\n';
       });
     }
     /// The screen line of one solved nip.
@@ -92,6 +100,22 @@ namespace rollnip
         for (const auto &[z, q] : profile)
           out << z << ',' << q << '\n';
       });
+    }
+
+    /// The elastic core's deflection v(z) [mm] (core_tube.h) and, on the
+    /// screen, its value at the middle of the face.
+    void
+    write_elastic_core(const std::string                            &path,
+                       const std::vector<std::pair<double, double>> &bending)
+    {
+      write_atomically(path, [&](std::ostream &out) {
+        out << std::setprecision(10) << "z_mm,core_deflection_v_mm\n";
+        for (const auto &[z, v] : bending)
+          out << z << ',' << v << '\n';
+      });
+      std::cout << "  elastic core: deflection v = " << bending.front().second
+                << " mm at the middle of the face, v(z) in " << path
+                << std::endl;
     }
   } // namespace
 
@@ -143,15 +167,21 @@ namespace rollnip
         seconds.push_back(timer.wall_time());
         if (root)
           print_nip(nips.back(), seconds.back());
-        if (!three_d.fix_far_face)
+        if (!three_d.fix_far_face && !three_d.elastic_core)
           free_ends.push_back(three_d::evaluate_free_end(body, u0));
         if (parameters.output.write_vtu)
           body.write_vtu(directory, "slice_3d", nips.size() - 1);
       }
     const auto                  profile = body.line_load_profile();
     const three_d::ContactPatch patch   = body.contact_patch();
+    const auto                  bending = three_d.elastic_core
+                                            ? three_d::core_deflection_profile(body)
+                                            : std::vector<std::pair<double, double>>();
     if (root)
       {
+        if (!bending.empty())
+          write_elastic_core(directory + "/core_deflection_along_axis.csv",
+                             bending);
         write_line_load(directory + "/line_load_along_axis.csv", profile);
         three_d::write_contact_patch(directory + "/contact_patch.txt",
                                      patch,
@@ -180,7 +210,8 @@ namespace rollnip
                       nips.back(),
                       total.wall_time(),
                       Utilities::MPI::n_mpi_processes(communicator),
-                      free_ends.empty() ? nullptr : &free_ends.back());
+                      free_ends.empty() ? nullptr : &free_ends.back(),
+                      bending);
       }
     return 0;
   }

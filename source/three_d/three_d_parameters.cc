@@ -7,6 +7,50 @@ namespace rollnip
 {
   namespace Parameters
   {
+    namespace
+    {
+      /// The elastic core's entries (three_d/core_tube.h).
+      void
+      declare_core_tube(ParameterHandler &prm)
+      {
+        declare_documented(prm,
+                           "Core",
+                           "rigid",
+                           Patterns::Selection("rigid|elastic"),
+                           "'rigid': the bonded nodes at R1 are held (or "
+                           "follow Core deflection); 'elastic': a steel tube "
+                           "from Core inner radius to R1 meshed with the "
+                           "cover, running on to the journal at Bearing "
+                           "distance, where u_x = u_y = 0 on its end "
+                           "section (a simple support); needs a 180 deg "
+                           "sector with Far edge = symmetry");
+        declare_documented(prm,
+                           "Core inner radius",
+                           "0",
+                           Patterns::Double(0.),
+                           "The elastic core tube's bore radius [mm], "
+                           "between 0 and Geometry/Inner radius");
+        declare_documented(prm,
+                           "Core Young's modulus",
+                           "210000",
+                           Patterns::Double(0.),
+                           "The elastic core's Young's modulus [MPa] "
+                           "(steel: 210000)");
+        declare_documented(prm,
+                           "Core Poisson ratio",
+                           "0.3",
+                           Patterns::Double(0., 0.5),
+                           "The elastic core's Poisson ratio (steel: 0.3)");
+        declare_documented(prm,
+                           "Bearing distance",
+                           "0",
+                           Patterns::Double(0.),
+                           "The journal's distance from the middle of the "
+                           "face along the axis [mm], beyond the cover end "
+                           "(> Slice thickness)");
+      }
+    } // namespace
+
     void
     ThreeD::declare(ParameterHandler &prm)
     {
@@ -70,6 +114,7 @@ namespace rollnip
                          "layer at the far face z = Slice thickness; the "
                          "layers thin geometrically towards the far face "
                          "(a free cover end), 1: uniform");
+      declare_core_tube(prm);
       prm.leave_subsection();
     }
 
@@ -86,7 +131,12 @@ namespace rollnip
       core_deflection       = prm.get("Core deflection");
       // Parses it: a bad expression is refused here, naming the entry.
       const three_d::CoreDeflection check_core(core_deflection);
-      axial_grading = prm.get_double("Axial grading");
+      axial_grading       = prm.get_double("Axial grading");
+      elastic_core        = prm.get("Core") == "elastic";
+      core_inner_radius   = prm.get_double("Core inner radius");
+      core_youngs_modulus = prm.get_double("Core Young's modulus");
+      core_poisson_ratio  = prm.get_double("Core Poisson ratio");
+      bearing_distance    = prm.get_double("Bearing distance");
       prm.leave_subsection();
       AssertThrow(slice_thickness > 0 && slice_thickness <= 1e5,
                   ExcMessage("Three d/Slice thickness must lie in (0, 1e5] "

@@ -80,7 +80,8 @@ namespace rollnip
      * an active node's Newton update is constrained to the linearised gap, g +
      * n . du = 0. Conditions: bonded at R1, u_theta = 0 on the plane through
      * the nip, the far edge as Boundary conditions/Far edge, u_z = 0 on z = 0
-     * and (Far face) on z = L.
+     * and (Far face) on z = L. A layered cover: every cell has its layer's
+     * law (by material id).
      */
     class SliceBody
     {
@@ -308,6 +309,11 @@ namespace rollnip
       /// quarter of its faces' areas, by x dof, ghosted [mm^2].
       TrilinosWrappers::MPI::Vector
       vertex_areas() const;
+
+      /// Every cover layer's law, by the cells' material id (0: on the
+      /// core); law above is the surface layer's, the scale of the contact
+      /// rule and of the iterative solver.
+      std::vector<std::unique_ptr<const MaterialLaw<dim>>> layer_laws;
     };
   } // namespace three_d
 } // namespace rollnip

@@ -6,6 +6,8 @@
 
 #include <rollnip/parameters.h>
 
+#include <vector>
+
 namespace rollnip
 {
   namespace three_d
@@ -27,6 +29,11 @@ namespace rollnip
       constexpr types::boundary_id far_face = 5;
     } // namespace SliceIds
 
+    /// Every step of @p steps cut into 2^@p level equal ones: the cells of
+    /// the 2D mesh level @p level in a coarse mesh.
+    std::vector<double>
+    halved_steps(const std::vector<double> &steps, const unsigned int level);
+
     /**
      * The builtin sector annulus of Geometry and Mesh (the same radial and
      * graded circumferential cells as the 2D fixed mesh) extruded along z
@@ -37,7 +44,9 @@ namespace rollnip
      * cells thick and its vertices are the 2D mesh's at that level. The
      * layers thin towards z = @p thickness by @p axial_grading
      * (axial_grading.h). All
-     * cells carry a cylindrical manifold about the roll axis (the z axis).
+     * cells carry a cylindrical manifold about the roll axis (the z axis)
+     * and, as material id, the cover layer they lie in (0 on the core,
+     * geometry/cover_layers.h).
      */
     void
     make_slice_mesh(const Parameters::AllParameters           &parameters,

@@ -34,6 +34,15 @@ namespace rollnip
       /// muparser expression in z [mm] (three_d/core_deflection.h).
       std::string core_deflection;
 
+      /// Three d/Core = elastic: a steel tube meshed with the cover and
+      /// supported at its journals (core_tube.h); false: the rigid core.
+      bool   elastic_core        = false;
+      double core_inner_radius   = 0;     ///< [mm]
+      double core_youngs_modulus = 210e3; ///< [MPa]
+      double core_poisson_ratio  = 0.3;
+      /// The journal's distance from the middle of the face, z = 0 [mm].
+      double bearing_distance = 0;
+
       static void
       declare(ParameterHandler &prm);
       void
