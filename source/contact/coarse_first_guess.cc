@@ -91,9 +91,10 @@ namespace rollnip
         guess.n_solves        = control.n_contact_solves();
         if (r.converged)
           {
-            guess.theta = r.theta0;
-            guess.slope = control.local_slope(target);
-            guess.scene = scene;
+            guess.theta     = r.theta0;
+            guess.slope     = control.local_slope(target);
+            guess.curvature = control.local_curvature();
+            guess.scene     = scene;
           }
         else
           {

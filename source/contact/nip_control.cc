@@ -30,6 +30,11 @@ namespace rollnip
     /// of the first theta0 tried (ten halvings): a nip that small is not
     /// what the target needs, and the mesh would not resolve it.
     constexpr double min_step_back = 1e-3;
+    /// The curvature of log theta0 in log q is taken from three nips at
+    /// least this far apart in log q: their q carry the conformity error
+    /// of the level-0 control (about 1e-4), which the second divided
+    /// difference divides by the product of the gaps.
+    constexpr double min_curvature_spread = 0.02;
 
     /// Marks the message of a contact solve that stalled on round-off
     /// (InverseContact::damp()).
@@ -135,8 +140,9 @@ namespace rollnip
       std::cout, Utilities::MPI::this_mpi_process(contact.communicator()) == 0);
     if (c.theta > 0)
       {
-        slope_hint  = c.slope;
-        hint_target = target;
+        slope_hint     = c.slope;
+        curvature_hint = c.curvature;
+        hint_target    = target;
         start_from_coarse(contact, *c.scene);
         pcout << "First guess from mesh level 0: theta0 = " << std::fixed
               << std::setprecision(6) << c.theta * deg << " deg (" << c.n_solves
@@ -174,6 +180,39 @@ namespace rollnip
     return std::isfinite(slope) && slope > 0 ? slope : 0;
   }
 
+  double
+  NipControl::local_curvature() const
+  {
+    if (converged.size() < 3)
+      return 0;
+    // The lowest and highest q and the nip nearest their middle (log q).
+    const auto [low, high] =
+      std::minmax_element(converged.begin(),
+                          converged.end(),
+                          [](const auto &a, const auto &b) {
+                            return a.q < b.q;
+                          });
+    const double x_low = std::log(low->q), x_high = std::log(high->q);
+    const double middle = 0.5 * (x_low + x_high);
+    const Point *mid    = nullptr;
+    for (const auto &p : converged)
+      if (&p != &*low && &p != &*high &&
+          (mid == nullptr || std::abs(std::log(p.q) - middle) <
+                               std::abs(std::log(mid->q) - middle)))
+        mid = &p;
+    if (mid == nullptr)
+      return 0;
+    const double x_mid = std::log(mid->q);
+    const double gap   = min_curvature_spread;
+    if (x_mid - x_low < gap || x_high - x_mid < gap)
+      return 0;
+    // Twice the second divided difference of log theta0 in log q.
+    const double left  = std::log(mid->theta / low->theta) / (x_mid - x_low);
+    const double right = std::log(high->theta / mid->theta) / (x_high - x_mid);
+    const double c     = 2 * (right - left) / (x_high - x_low);
+    return std::isfinite(c) ? c : 0;
+  }
+
   std::vector<NipControl::Point>
   NipControl::nearest_first(const double target) const
   {
@@ -195,7 +234,8 @@ namespace rollnip
                           : IterationControls::default_slope_indentation;
     double slope =
       slope_hint > 0 && target == hint_target ? slope_hint : default_slope;
-    if (near.size() > 1 && near[0].theta != near[1].theta)
+    const bool two_points = near.size() > 1 && near[0].theta != near[1].theta;
+    if (two_points)
       slope = std::log(near[0].q / near[1].q) /
               std::log(near[0].theta / near[1].theta);
     if (!std::isfinite(slope))
@@ -203,7 +243,21 @@ namespace rollnip
     slope = std::clamp(slope,
                        IterationControls::min_slope,
                        IterationControls::max_slope);
-    return near[0].theta * std::pow(target / near[0].q, 1. / slope);
+    const double power_law =
+      near[0].theta * std::pow(target / near[0].q, 1. / slope);
+    // The two nips of a cold target: the level-0 curve's bend turns the
+    // secant in log-log into the parabola through both with that
+    // curvature (the thin cover's log P against log theta0 bends enough
+    // to cost a fourth solve otherwise).
+    if (two_points && converged.size() == 2 && target == hint_target &&
+        curvature_hint != 0)
+      {
+        const double x = std::log(target);
+        return power_law *
+               std::exp(0.5 * curvature_hint * (x - std::log(near[0].q)) *
+                        (x - std::log(near[1].q)));
+      }
+    return power_law;
   }
 
   double
@@ -410,8 +464,9 @@ namespace rollnip
     theta        = std::min(theta, theta_max);
     if (guess > 0 && guess_slope > 0)
       {
-        slope_hint  = guess_slope;
-        hint_target = target;
+        slope_hint     = guess_slope;
+        curvature_hint = 0;
+        hint_target    = target;
       }
     const double  first_theta = theta;
     double        failed_at   = std::numeric_limits<double>::max();

@@ -22,7 +22,12 @@
 //    the third meets the 1e-6 tolerance or nearly; the closed-form guess
 //    took 4 to 5.3 on average at level 2, doc/results.md). The level-0
 //    solves are printed beside them; each costs a quarter of a level-1
-//    solve or less.
+//    solve or less;
+//  - the thin cover, whose log P against log theta0 bends most, takes 3.2
+//    solves on average (16 for its five targets, measured: 4 only at
+//    60 N/mm), and all 20 targets 3.1 at most (61 measured): its third
+//    theta0 adds the level-0 curve's curvature to the secant through the
+//    first two nips (NipControl::local_curvature()).
 
 #include <rollnip/contact/nip_control.h>
 #include <rollnip/contact/nip_solver.h>
@@ -154,20 +159,27 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   testing::Checker                 checker;
   std::vector<unsigned int>        solves;
+  unsigned int                     thin_solves = 0;
   for (const Cover &cover : covers())
     {
+      const std::size_t first = solves.size();
       for (const double load : {1., 10., 60.})
         solves.push_back(cold_target(checker, cover, "load", load));
       for (const double fraction : {0.03, 0.2})
         solves.push_back(cold_target(
           checker, cover, "indentation", fraction * cover.thickness));
+      if (cover.thickness == 3.)
+        thin_solves = std::accumulate(solves.begin() + first, solves.end(), 0u);
     }
   const double mean =
     std::accumulate(solves.begin(), solves.end(), 0.) / solves.size();
   const unsigned int most = *std::max_element(solves.begin(), solves.end());
-  checker.check(mean <= 3.5 && most <= 4,
+  checker.check(mean <= 3.1 && most <= 4,
                 "contact solves per cold target: mean " + testing::num(mean) +
-                  " <= 3.5, largest " + std::to_string(most) + " <= 4, over " +
+                  " <= 3.1, largest " + std::to_string(most) + " <= 4, over " +
                   std::to_string(solves.size()) + " targets");
+  checker.check(thin_solves <= 16,
+                "contact solves on the thin cover: " +
+                  std::to_string(thin_solves) + " <= 16 for 5 targets");
   return checker.result();
 }

@@ -22,11 +22,13 @@ namespace rollnip
    */
   struct CoarseFirstGuess
   {
-    double       theta    = 0; ///< [rad], 0 if the coarse nip did not converge
-    double       slope    = 0; ///< d log q / d log theta0 there, 0 if unknown
-    unsigned int n_solves = 0; ///< contact solves on the coarse mesh
-    double       seconds  = 0; ///< wall time, set-up included
-    std::string  failure;      ///< why there is no guess, if there is none
+    double theta = 0; ///< [rad], 0 if the coarse nip did not converge
+    double slope = 0; ///< d log q / d log theta0 there, 0 if unknown
+    /// d^2 log theta0 / d (log q)^2 of its converged nips, 0 if unknown
+    double       curvature = 0;
+    unsigned int n_solves  = 0; ///< contact solves on the coarse mesh
+    double       seconds   = 0; ///< wall time, set-up included
+    std::string  failure;       ///< why there is no guess, if there is none
     /// The largest q (P [N/mm] or u0 [mm]) of a coarse nip that converged
     /// and its theta0 [rad]; 0 if none did.
     double largest_reached = 0, largest_reached_theta = 0;

@@ -73,6 +73,12 @@ namespace rollnip
     double
     local_slope(const double target) const;
 
+    /// The curvature d^2 log theta0 / d (log q)^2 of the converged nips,
+    /// from the three spread widest in log q (0 with fewer, or too close
+    /// together for the conformity error of q to stay small beside it).
+    double
+    local_curvature() const;
+
   private:
     struct Point
     {
@@ -171,6 +177,11 @@ namespace rollnip
     /// cold target hint_target, 0 if none: the secant's slope while one
     /// nip of that target has converged.
     double slope_hint = 0, hint_target = 0;
+    /// The curvature of log theta0 against log q on the level-0 scene
+    /// (local_curvature()), 0 if none: added to the secant while two nips
+    /// of hint_target have converged, where the power law alone misses
+    /// the bend of the thin cover's curve by more than the tolerance.
+    double curvature_hint = 0;
     /// Why the level-0 scene shows a cold target out of reach ("" if it
     /// does not): its largest converged q lies below half the target.
     std::string coarse_refusal;
