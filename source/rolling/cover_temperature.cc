@@ -348,4 +348,21 @@ namespace rollnip
       out.write_pvtu_record(o, pieces);
     });
   }
+  double
+  profile_temperature(const std::vector<std::pair<double, double>> &profile,
+                      const double                                  r)
+  {
+    if (profile.empty())
+      return std::nan("");
+    auto it = std::lower_bound(profile.begin(),
+                               profile.end(),
+                               std::make_pair(r, -1e300));
+    if (it == profile.begin())
+      return it->second;
+    if (it == profile.end())
+      return profile.back().second;
+    const auto &a = *(it - 1), &b = *it;
+    return a.second +
+           (b.second - a.second) * (r - a.first) / (b.first - a.first);
+  }
 } // namespace rollnip

@@ -39,25 +39,6 @@ namespace rollnip
         return value;
       }
     };
-
-    /// T [degC] at @p r [mm], linear between the profile's nodes.
-    double
-    interpolate(const std::vector<std::pair<double, double>> &profile,
-                const double                                  r)
-    {
-      if (profile.empty())
-        return std::nan("");
-      auto it = std::lower_bound(profile.begin(),
-                                 profile.end(),
-                                 std::make_pair(r, -1e300));
-      if (it == profile.begin())
-        return it->second;
-      if (it == profile.end())
-        return profile.back().second;
-      const auto &a = *(it - 1), &b = *it;
-      return a.second +
-             (b.second - a.second) * (r - a.first) / (b.first - a.first);
-    }
   } // namespace
 
   std::function<double(double)>
@@ -149,8 +130,8 @@ namespace rollnip
             << std::setprecision(8);
         for (const auto &c : loss.circles)
           out << c.radius << ',' << R0 - c.radius << ',' << c.layer << ','
-              << c.mean << ',' << c.peak << ',' << interpolate(T, c.radius)
-              << '\n';
+              << c.mean << ',' << c.peak << ','
+              << profile_temperature(T, c.radius) << '\n';
       });
     }
 

@@ -19,23 +19,6 @@ namespace rollnip
   {
     using Profile = std::vector<std::pair<double, double>>;
 
-    /// T [degC] at radius @p r [mm], linear between the profile's nodes,
-    /// constant beyond its ends.
-    double
-    temperature_at(const Profile &profile, const double r)
-    {
-      auto it = std::lower_bound(profile.begin(),
-                                 profile.end(),
-                                 std::make_pair(r, -1e300));
-      if (it == profile.begin())
-        return it->second;
-      if (it == profile.end())
-        return profile.back().second;
-      const auto &a = *(it - 1), &b = *it;
-      return a.second +
-             (b.second - a.second) * (r - a.first) / (b.first - a.first);
-    }
-
     /// One pass's loss and temperature at the main speed.
     struct Pass
     {
@@ -123,10 +106,10 @@ namespace rollnip
     {
       body.materials().set_modulus_factor(
         [softening, T](const Point<dim> &X, const types::material_id id) {
-          return softening.modulus_factor(id, temperature_at(T, X.norm()));
+          return softening.modulus_factor(id, profile_temperature(T, X.norm()));
         });
       circle_factor = [softening, T](const double r, const unsigned int l) {
-        const double t = temperature_at(T, r);
+        const double t = profile_temperature(T, r);
         return softening.modulus_factor(l, t) * softening.time_shift(l, t);
       };
       coupling.min_modulus_factor = std::numeric_limits<double>::max();

@@ -34,6 +34,13 @@ namespace rollnip
     std::vector<std::pair<double, double>> profile;
   };
 
+  /// T [degC] at radius @p r [mm] of a (r, T) @p profile sorted by r
+  /// (CoverTemperatureResult::profile): linear between its nodes, constant
+  /// beyond its ends, NaN when it is empty.
+  double
+  profile_temperature(const std::vector<std::pair<double, double>> &profile,
+                      const double                                  r);
+
   /**
    * Steady conduction in the cover, -div(k grad T) = s, on the cover's own
    * mesh with FE_Q of the displacement's degree: the core held at
