@@ -30,7 +30,8 @@ namespace rollnip
   ViscoelasticLaw<d>::ViscoelasticLaw(const double                  C1,
                                       const double                  C2,
                                       const std::vector<PronyTerm> &terms)
-      : elastic(C1, C2)
+      : WrappingLaw<d>(elastic)
+      , elastic(C1, C2)
       , C1(C1)
       , C2(C2)
       , terms(terms)

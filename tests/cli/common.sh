@@ -152,6 +152,20 @@ run_named()
   }
 }
 
+# run_quiet_scene NAME: appends to NAME.prm an Accuracy block without the
+# error estimate (its companion solve is not what these tests check) and
+# quiet output into NAME/, then runs it with run_named.
+run_quiet_scene()
+{
+  printf 'subsection Accuracy\n  set Error estimate = false\nend\n' \
+    >> "$1.prm"
+  quiet_output "$1" >> "$1.prm"
+  run_named "$1"
+}
+
+# contact_value NAME KEY: KEY's value in NAME/contact.txt.
+contact_value() { summary_value "$1/contact.txt" "$2"; }
+
 # write_long_sweep SCENE FILE: SCENE with 30 load targets (2, 4, .., 60) on
 # a small mesh, without VTU, into FILE: a sweep long enough to interrupt.
 write_long_sweep()

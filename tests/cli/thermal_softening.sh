@@ -36,15 +36,10 @@ run()
 subsection Contact
   set Values = 20
 end
-subsection Accuracy
-  set Error estimate = false
-end
 $2
 PRM
-  quiet_output "$1" >> "$1.prm"
-  run_named "$1"
+  run_quiet_scene "$1"
 }
-value() { summary_value "$1/contact.txt" "$2"; }
 
 run plain ""
 run zero "subsection Rolling
@@ -77,12 +72,12 @@ subsection Material
   set C1 = $C1
 end"
 check_rel_close "modulus factor at 60 degC" \
-  "$(value uniform thermal_modulus_factor_min)" \
+  "$(contact_value uniform thermal_modulus_factor_min)" \
   "$(awk 'BEGIN { printf "%.15g", exp(-0.4) }')" 1e-7
 for key in half_nip_angle_theta0_deg indentation_u0_mm nip_load_P_N_per_mm \
   peak_pressure_MPa; do
   check_rel_close "uniform 60 degC, c = 0.01: $key against C1 = $C1" \
-    "$(value uniform "$key")" "$(value direct "$key")" 1e-5
+    "$(contact_value uniform "$key")" "$(contact_value direct "$key")" 1e-5
 done
 check_rel_close "uniform 60 degC: 2b against C1 = $C1" \
   "$(csv_value uniform/nip_report.csv nip_width_2b_mm 1)" \
@@ -93,11 +88,11 @@ run tiny "subsection Rolling
     set Modulus temperature coefficient = 1e-9
   end
 end"
-check_less "c = 1e-9: no pass against its passes" 0 "$(value tiny thermal_passes)"
+check_less "c = 1e-9: no pass against its passes" 0 "$(contact_value tiny thermal_passes)"
 for key in half_nip_angle_theta0_deg rolling_resistance_N_per_mm \
   cover_max_temperature_degC; do
   check_rel_close "c = 1e-9: $key against c = 0" \
-    "$(value tiny "$key")" "$(value plain "$key")" 1e-5
+    "$(contact_value tiny "$key")" "$(contact_value plain "$key")" 1e-5
 done
 
 run soft "subsection Rolling
@@ -107,16 +102,16 @@ run soft "subsection Rolling
     set Temperature tolerance           = 1e-4
   end
 end"
-[ "$(value soft thermal_converged)" = true ] ||
+[ "$(contact_value soft thermal_converged)" = true ] ||
   fail "c = 0.01: the fixed point did not converge"
-check_less "c = 0.01: contraction" "$(value soft thermal_contraction)" 0.5
-gen="$(value soft heat_generated_W_per_m)"
-out="$(awk -v a="$(value soft heat_to_air_W_per_m)" \
-  -v c="$(value soft heat_to_core_W_per_m)" 'BEGIN { printf "%.12g", a + c }')"
+check_less "c = 0.01: contraction" "$(contact_value soft thermal_contraction)" 0.5
+gen="$(contact_value soft heat_generated_W_per_m)"
+out="$(awk -v a="$(contact_value soft heat_to_air_W_per_m)" \
+  -v c="$(contact_value soft heat_to_core_W_per_m)" 'BEGIN { printf "%.12g", a + c }')"
 check_rel_close "c = 0.01: heat to air + core against heat made" "$out" \
   "$gen" 1e-6
 check_less "c = 0.01: constant-modulus 2b" \
-  "$(value soft constant_modulus_nip_width_2b_mm)" \
+  "$(contact_value soft constant_modulus_nip_width_2b_mm)" \
   "$(csv_value soft/nip_report.csv nip_width_2b_mm 1)"
 
 run shift "subsection Rolling
@@ -127,7 +122,7 @@ run shift "subsection Rolling
   end
 end"
 check_rel_close "WLF alone: theta0 as at the constant modulus" \
-  "$(value shift half_nip_angle_theta0_deg)" \
-  "$(value plain half_nip_angle_theta0_deg)" 1e-12
-check_less "WLF alone: F_r" "$(value shift rolling_resistance_N_per_mm)" \
-  "$(value plain rolling_resistance_N_per_mm)"
+  "$(contact_value shift half_nip_angle_theta0_deg)" \
+  "$(contact_value plain half_nip_angle_theta0_deg)" 1e-12
+check_less "WLF alone: F_r" "$(contact_value shift rolling_resistance_N_per_mm)" \
+  "$(contact_value plain rolling_resistance_N_per_mm)"

@@ -44,14 +44,9 @@ subsection Rolling
   set Ambient temperature       = 25
   set Core temperature          = 35
 end
-subsection Accuracy
-  set Error estimate = false
-end
 PRM
-  quiet_output "$1" >> "$1.prm"
-  run_named "$1"
+  run_quiet_scene "$1"
 }
-value() { summary_value "$1/contact.txt" "$2"; }
 
 run flat "  set Indenter radius = inf"
 run pair "end
@@ -59,8 +54,8 @@ subsection Mating roll
   set Type = covered roll
 ${cover//subsection /  subsection }"
 
-check_rel_close "pair: P" "$(value pair nip_load_P_N_per_mm)" \
-  "$(value flat nip_load_P_N_per_mm)" 1e-5
+check_rel_close "pair: P" "$(contact_value pair nip_load_P_N_per_mm)" \
+  "$(contact_value flat nip_load_P_N_per_mm)" 1e-5
 for q in rolling_resistance:mate_rolling_resistance \
   cover_max_temperature:mate_cover_max_temperature \
   cover_surface_temperature:mate_cover_surface_temperature; do
@@ -68,17 +63,17 @@ for q in rolling_resistance:mate_rolling_resistance \
   mate="${q##*:}"
   unit=_N_per_mm
   [[ "$roll" == *temperature ]] && unit=_degC
-  f="$(value flat "$roll$unit")"
+  f="$(contact_value flat "$roll$unit")"
   check_rel_close "pair: roll's $roll against the flat plane's" \
-    "$(value pair "$roll$unit")" "$f" 1e-3
+    "$(contact_value pair "$roll$unit")" "$f" 1e-3
   check_rel_close "pair: mating roll's $mate against the flat plane's" \
-    "$(value pair "$mate$unit")" "$f" 1e-3
+    "$(contact_value pair "$mate$unit")" "$f" 1e-3
   check_rel_close "pair: mating roll's $mate against the roll's" \
-    "$(value pair "$mate$unit")" "$(value pair "$roll$unit")" 1e-3
+    "$(contact_value pair "$mate$unit")" "$(contact_value pair "$roll$unit")" 1e-3
 done
 check_rel_close "pair: drive power of both" \
-  "$(value pair pair_drive_power_W_per_m)" \
-  "$(awk -v p="$(value flat rolling_drive_power_W_per_m)" \
+  "$(contact_value pair pair_drive_power_W_per_m)" \
+  "$(awk -v p="$(contact_value flat rolling_drive_power_W_per_m)" \
     'BEGIN { printf "%.12g", 2 * p }')" 1e-3
 
 # The mate's own cover: a mate 1000 times stiffer, of the same size, is
@@ -98,8 +93,8 @@ subsection Mating roll
   subsection Material
     set C1 = 600
   end"
-ratio="$(awk -v m="$(value stiff mate_rolling_resistance_N_per_mm)" \
-  -v r="$(value stiff rolling_resistance_N_per_mm)" \
+ratio="$(awk -v m="$(contact_value stiff mate_rolling_resistance_N_per_mm)" \
+  -v r="$(contact_value stiff rolling_resistance_N_per_mm)" \
   'BEGIN { printf "%.6g", m / r }')"
 check_less "mate 1000 times stiffer: its F_r over the roll's" "$ratio" 1e-3
 check_less "mate 1000 times stiffer: 0.85e-3 against its F_r over the roll's" \
@@ -116,10 +111,10 @@ subsection Rolling
     set Retardation time   = 0
   end"
 check_abs_below "mate without hysteresis: its F_r" \
-  "$(value lossless mate_rolling_resistance_N_per_mm)" 1e-300
+  "$(contact_value lossless mate_rolling_resistance_N_per_mm)" 1e-300
 check_rel_close "mate without hysteresis: the roll's F_r against the pair's" \
-  "$(value lossless rolling_resistance_N_per_mm)" \
-  "$(value pair rolling_resistance_N_per_mm)" 1e-6
-[ "$(value flat mate_rolling_resistance_N_per_mm)" = 0 ] ||
+  "$(contact_value lossless rolling_resistance_N_per_mm)" \
+  "$(contact_value pair rolling_resistance_N_per_mm)" 1e-6
+[ "$(contact_value flat mate_rolling_resistance_N_per_mm)" = 0 ] ||
   fail "a rigid plane has a loss of its own"
 pass "a rigid mate: no loss of its own"

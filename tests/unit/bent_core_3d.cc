@@ -15,6 +15,7 @@
 #include <rollnip/three_d/slice_body.h>
 
 #include "test_tools.h"
+#include "three_d_test_tools.h"
 
 #include <algorithm>
 #include <cmath>
@@ -30,14 +31,8 @@ namespace
         const unsigned int layers,
         const std::string &deflection)
   {
-    Parameters::ThreeD t;
-    t.enabled               = true;
-    t.slice_thickness       = thickness;
-    t.layers                = layers;
-    t.fix_far_face          = true;
-    t.approach_step         = 0.5;
-    t.max_newton_iterations = 40;
-    t.core_deflection       = deflection;
+    auto t            = testing::slice_parameters(thickness, layers);
+    t.core_deflection = deflection;
     return t;
   }
 

@@ -11,21 +11,13 @@
 #include <rollnip/three_d/free_end.h>
 
 #include "test_tools.h"
+#include "three_d_test_tools.h"
 
 using namespace rollnip;
 
 namespace
 {
-  // A 2 mm cover on the run-30 roll, a 20 deg sector (as free_end_3d).
-  const std::string scene =
-    "subsection Geometry\n set Inner radius = 58.7\n set Outer radius = "
-    "60.7\n set Sector angle = 20\nend\n"
-    "subsection Mesh\n set Radial cells = 4\n set Circumferential cells = "
-    "18\n set Circumferential grading = 10\nend\n"
-    "subsection Material\n set C1 = 0.25\n set C2 = 0.25\nend\n"
-    "subsection Boundary conditions\n set Far edge (id 3) = free\nend\n"
-    "subsection Contact\n set Mode = indentation\n set Values = 0.2\n"
-    " set Indenter radius = 76.2\nend\n";
+  const std::string scene = testing::thin_end_cover_scene();
 } // namespace
 
 int
@@ -38,14 +30,7 @@ main(int argc, char **argv)
   double             mean[3], peak[3];
   for (unsigned int k = 0; k < 3; ++k)
     {
-      Parameters::ThreeD t;
-      t.enabled               = true;
-      t.slice_thickness       = 30.;
-      t.layers                = layers[k];
-      t.fix_far_face          = false;
-      t.approach_step         = 0.1;
-      t.max_newton_iterations = 40;
-      t.axial_grading         = 12.;
+      const auto t = testing::slice_parameters(30., layers[k], true, 0.1, 12.);
       three_d::SliceBody body(parameters, t, 0, MPI_COMM_WORLD);
       body.solve(0.2);
       const three_d::FreeEnd end = three_d::evaluate_free_end(body, 0.2);

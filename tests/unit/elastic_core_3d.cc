@@ -18,6 +18,7 @@
 #include <rollnip/three_d/slice_body.h>
 
 #include "test_tools.h"
+#include "three_d_test_tools.h"
 
 using namespace rollnip;
 
@@ -39,19 +40,13 @@ namespace
   Parameters::ThreeD
   face(const bool elastic, const double youngs_modulus)
   {
-    Parameters::ThreeD t;
-    t.enabled               = true;
-    t.slice_thickness       = L;
-    t.layers                = 16;
-    t.fix_far_face          = false;
-    t.approach_step         = 0.5;
-    t.max_newton_iterations = 40;
-    t.core_deflection       = "0";
-    t.elastic_core          = elastic;
-    t.core_inner_radius     = Ri;
-    t.core_youngs_modulus   = youngs_modulus;
-    t.core_poisson_ratio    = nu;
-    t.bearing_distance      = bearing;
+    auto t                = testing::slice_parameters(L, 16, true);
+    t.core_deflection     = "0";
+    t.elastic_core        = elastic;
+    t.core_inner_radius   = Ri;
+    t.core_youngs_modulus = youngs_modulus;
+    t.core_poisson_ratio  = nu;
+    t.bearing_distance    = bearing;
     return t;
   }
 

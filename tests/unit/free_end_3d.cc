@@ -17,38 +17,13 @@
 #include <rollnip/three_d/free_end.h>
 
 #include "test_tools.h"
+#include "three_d_test_tools.h"
 
 using namespace rollnip;
 
 namespace
 {
-  // A 2 mm cover on the run-30 roll, a 20 deg sector, level 0.
-  const std::string scene =
-    "subsection Geometry\n set Inner radius = 58.7\n set Outer radius = "
-    "60.7\n set Sector angle = 20\nend\n"
-    "subsection Mesh\n set Radial cells = 4\n set Circumferential cells = "
-    "18\n set Circumferential grading = 10\nend\n"
-    "subsection Material\n set C1 = 0.25\n set C2 = 0.25\nend\n"
-    "subsection Boundary conditions\n set Far edge (id 3) = free\nend\n"
-    "subsection Contact\n set Mode = indentation\n set Values = 0.2\n"
-    " set Indenter radius = 76.2\nend\n";
-
-  Parameters::ThreeD
-  face(const double       length,
-       const unsigned int layers,
-       const double       grading,
-       const bool         free)
-  {
-    Parameters::ThreeD t;
-    t.enabled               = true;
-    t.slice_thickness       = length;
-    t.layers                = layers;
-    t.fix_far_face          = !free;
-    t.approach_step         = 0.1;
-    t.max_newton_iterations = 40;
-    t.axial_grading         = grading;
-    return t;
-  }
+  const std::string scene = testing::thin_end_cover_scene();
 
   void
   check_decay_of_exponential(testing::Checker &check)
@@ -90,7 +65,7 @@ main(int argc, char **argv)
 
   // The plane-strain slice: P and its bond stresses.
   three_d::SliceBody slice(parameters,
-                           face(1., 1, 1., false),
+                           testing::slice_parameters(1., 1, false, 0.1),
                            0,
                            MPI_COMM_WORLD);
   const double       P_slice     = slice.solve(u0).P;
@@ -100,7 +75,7 @@ main(int argc, char **argv)
   // Graded layers, both faces axially fixed: still plane strain.
   {
     three_d::SliceBody body(parameters,
-                            face(6., 6, 8., false),
+                            testing::slice_parameters(6., 6, false, 0.1, 8.),
                             0,
                             MPI_COMM_WORLD);
     body.solve(u0);
@@ -116,7 +91,7 @@ main(int argc, char **argv)
   // The free end.
   const double            L = 30.;
   three_d::SliceBody      body(parameters,
-                          face(L, 20, 12., true),
+                          testing::slice_parameters(L, 20, true, 0.1, 12.),
                           0,
                           MPI_COMM_WORLD);
   const three_d::SliceNip nip       = body.solve(u0);

@@ -14,6 +14,7 @@
 #include <rollnip/three_d/slice_body.h>
 
 #include "test_tools.h"
+#include "three_d_test_tools.h"
 
 using namespace rollnip;
 
@@ -31,19 +32,6 @@ namespace
     "subsection Contact\n set Mode = indentation\n set Values = 1\n"
     " set Indenter radius = 76.2\n set Conformity tolerance = 1e-8\n"
     " set Control tolerance = 1e-9\nend\n";
-
-  Parameters::ThreeD
-  slice()
-  {
-    Parameters::ThreeD t;
-    t.enabled               = true;
-    t.slice_thickness       = 1.;
-    t.layers                = 1;
-    t.fix_far_face          = true;
-    t.approach_step         = 0.5;
-    t.max_newton_iterations = 40;
-    return t;
-  }
 
   /// The 2D P(u0) [N/mm], Q2-P1 at level 3.
   double
@@ -70,7 +58,10 @@ main(int argc, char **argv)
   double     error[2];
   for (const unsigned int level : {1u, 2u})
     {
-      three_d::SliceBody      body(parameters, slice(), level, MPI_COMM_WORLD);
+      three_d::SliceBody      body(parameters,
+                              testing::slice_parameters(1., 1),
+                              level,
+                              MPI_COMM_WORLD);
       const three_d::SliceNip nip = body.solve(u0);
       error[level - 1]            = nip.P / P_2d - 1.;
       std::cout << "two layers, level " << level << ", " << body.n_dofs()

@@ -16,6 +16,7 @@
 #include <rollnip/three_d/free_end.h>
 
 #include "test_tools.h"
+#include "three_d_test_tools.h"
 
 using namespace rollnip;
 
@@ -31,16 +32,7 @@ namespace
     "subsection Contact\n set Mode = indentation\n set Values = 0.5, 1\n"
     " set Indenter radius = 76.2\nend\n";
 
-  // A 2 mm cover on the run-30 roll, a 20 deg sector (as free_end_3d).
-  const std::string end_scene =
-    "subsection Geometry\n set Inner radius = 58.7\n set Outer radius = "
-    "60.7\n set Sector angle = 20\nend\n"
-    "subsection Mesh\n set Radial cells = 4\n set Circumferential cells = "
-    "18\n set Circumferential grading = 10\nend\n"
-    "subsection Material\n set C1 = 0.25\n set C2 = 0.25\nend\n"
-    "subsection Boundary conditions\n set Far edge (id 3) = free\nend\n"
-    "subsection Contact\n set Mode = indentation\n set Values = 0.2\n"
-    " set Indenter radius = 76.2\nend\n";
+  const std::string end_scene = testing::thin_end_cover_scene();
 
   Parameters::AllParameters
   with_element(const std::string &scene, const std::string &element)
@@ -48,24 +40,6 @@ namespace
     return testing::parameters_from_string(
       scene + "subsection Discretization\n set Element = " + element +
       "\nend\n");
-  }
-
-  Parameters::ThreeD
-  face(const double       length,
-       const unsigned int layers,
-       const double       grading,
-       const bool         free,
-       const double       step)
-  {
-    Parameters::ThreeD t;
-    t.enabled               = true;
-    t.slice_thickness       = length;
-    t.layers                = layers;
-    t.fix_far_face          = !free;
-    t.approach_step         = step;
-    t.max_newton_iterations = 40;
-    t.axial_grading         = grading;
-    return t;
   }
 
   void
@@ -79,11 +53,11 @@ namespace
     for (unsigned int level = 0; level < 2; ++level)
       {
         three_d::SliceBody body(q2,
-                                face(1, 1, 1, false, 0.5),
+                                testing::slice_parameters(1, 1),
                                 level,
                                 MPI_COMM_WORLD);
         three_d::SliceBody other(q1,
-                                 face(1, 1, 1, false, 0.5),
+                                 testing::slice_parameters(1, 1),
                                  level,
                                  MPI_COMM_WORLD);
         for (unsigned int k = 0; k < 2; ++k)
@@ -136,14 +110,15 @@ namespace
       {
         const auto         prm = with_element(end_scene, names[e]);
         three_d::SliceBody slice(prm,
-                                 face(1, 1, 1, false, 0.1),
+                                 testing::slice_parameters(1, 1, false, 0.1),
                                  0,
                                  MPI_COMM_WORLD);
         P_slice[e] = slice.solve(u0).P;
-        three_d::SliceBody      body(prm,
-                                face(L, 20, 12., true, 0.1),
-                                0,
-                                MPI_COMM_WORLD);
+        three_d::SliceBody body(
+          prm,
+          testing::slice_parameters(L, 20, true, 0.1, 12.),
+          0,
+          MPI_COMM_WORLD);
         const three_d::SliceNip nip = body.solve(u0);
         const three_d::FreeEnd  end = three_d::evaluate_free_end(body, u0);
         q_far[e]                    = end.decay.q_far;

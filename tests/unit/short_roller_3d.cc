@@ -14,6 +14,7 @@
 #include <rollnip/three_d/slice_body.h>
 
 #include "test_tools.h"
+#include "three_d_test_tools.h"
 
 #include <cmath>
 
@@ -26,14 +27,8 @@ namespace
   Parameters::ThreeD
   roller(const double half_width, const unsigned int layers, const bool free)
   {
-    Parameters::ThreeD t;
-    t.enabled               = true;
-    t.slice_thickness       = half_width;
-    t.layers                = layers;
-    t.fix_far_face          = !free;
-    t.approach_step         = 0.5;
-    t.max_newton_iterations = 40;
-    t.core_deflection       = "0";
+    auto t            = testing::slice_parameters(half_width, layers, free);
+    t.core_deflection = "0";
     return t;
   }
 } // namespace

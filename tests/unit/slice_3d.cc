@@ -12,6 +12,7 @@
 #include <rollnip/three_d/slice_body.h>
 
 #include "test_tools.h"
+#include "three_d_test_tools.h"
 
 using namespace rollnip;
 
@@ -26,19 +27,6 @@ namespace
     "subsection Boundary conditions\n set Far edge (id 3) = free\nend\n"
     "subsection Contact\n set Mode = indentation\n set Values = 0.5, 1, 2\n"
     " set Indenter radius = 76.2\nend\n";
-
-  Parameters::ThreeD
-  slice(const unsigned int layers)
-  {
-    Parameters::ThreeD t;
-    t.enabled               = true;
-    t.slice_thickness       = 1.;
-    t.layers                = layers;
-    t.fix_far_face          = true;
-    t.approach_step         = 0.5;
-    t.max_newton_iterations = 40;
-    return t;
-  }
 } // namespace
 
 int
@@ -55,7 +43,10 @@ main(int argc, char **argv)
   double             P_one_layer = 0;
   for (unsigned int l = 0; l < 2; ++l)
     {
-      three_d::SliceBody body(parameters, slice(1), levels[l], MPI_COMM_WORLD);
+      three_d::SliceBody body(parameters,
+                              testing::slice_parameters(1., 1),
+                              levels[l],
+                              MPI_COMM_WORLD);
       for (unsigned int k = 0; k < 3; ++k)
         {
           Timer                   timer;
@@ -91,7 +82,10 @@ main(int argc, char **argv)
   // Nothing varies along z: two cells through the thickness give the
   // one-cell P to round-off.
   {
-    three_d::SliceBody body(parameters, slice(2), levels[0], MPI_COMM_WORLD);
+    three_d::SliceBody body(parameters,
+                            testing::slice_parameters(1., 2),
+                            levels[0],
+                            MPI_COMM_WORLD);
     const double       P_two = body.solve(u0[1]).P;
     check.check(std::abs(P_two / P_one_layer - 1.) < 1e-8,
                 "two cells thick against one at level 1, u0 = 1 mm: P " +
@@ -101,7 +95,10 @@ main(int argc, char **argv)
   }
   // No approach, no load.
   {
-    three_d::SliceBody      body(parameters, slice(1), 0, MPI_COMM_WORLD);
+    three_d::SliceBody      body(parameters,
+                            testing::slice_parameters(1., 1),
+                            0,
+                            MPI_COMM_WORLD);
     const three_d::SliceNip nip = body.solve(0.);
     check.check(nip.P == 0. && nip.active_nodes == 0,
                 "u0 = 0: P = " + testing::num(nip.P) + " N/mm, " +

@@ -4,7 +4,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
-#include <rollnip/material/material_law.h>
+#include <rollnip/material/wrapping_law.h>
 
 namespace rollnip
 {
@@ -20,18 +20,19 @@ namespace rollnip
    * every value is the base law's to the last bit.
    */
   template <int d>
-  class ScaledLaw final : public MaterialLaw<d>
+  class ScaledLaw final : public WrappingLaw<d>
   {
   public:
     ScaledLaw(const MaterialLaw<d> &base, const double factor)
-        : base(base)
+        : WrappingLaw<d>(base)
         , s(factor)
     {}
 
     dealii::Tensor<2, d>
     piola(const dealii::Tensor<2, d> &F, const double q) const override
     {
-      return s == 1. ? base.piola(F, q) : s * base.piola(F, q / s);
+      return s == 1. ? this->wrapped.piola(F, q)
+                     : s * this->wrapped.piola(F, q / s);
     }
 
     dealii::Tensor<2, d>
@@ -39,47 +40,36 @@ namespace rollnip
                      const double                q,
                      const dealii::Tensor<2, d> &dF) const override
     {
-      return s == 1. ? base.piola_derivative(F, q, dF)
-                     : s * base.piola_derivative(F, q / s, dF);
-    }
-
-    dealii::Tensor<2, d>
-    pressure_direction(const dealii::Tensor<2, d> &F) const override
-    {
-      return base.pressure_direction(F);
-    }
-
-    double
-    constraint(const dealii::Tensor<2, d> &F) const override
-    {
-      return base.constraint(F);
+      return s == 1. ? this->wrapped.piola_derivative(F, q, dF)
+                     : s * this->wrapped.piola_derivative(F, q / s, dF);
     }
 
     dealii::SymmetricTensor<2, d>
     cauchy(const dealii::Tensor<2, d> &F, const double q) const override
     {
-      return s == 1. ? base.cauchy(F, q) : s * base.cauchy(F, q / s);
+      return s == 1. ? this->wrapped.cauchy(F, q)
+                     : s * this->wrapped.cauchy(F, q / s);
     }
 
     double
     out_of_plane_stress(const dealii::Tensor<2, d> &F,
                         const double                q) const override
     {
-      return s == 1. ? base.out_of_plane_stress(F, q)
-                     : s * base.out_of_plane_stress(F, q / s);
+      return s == 1. ? this->wrapped.out_of_plane_stress(F, q)
+                     : s * this->wrapped.out_of_plane_stress(F, q / s);
     }
 
     double
     shear_modulus() const override
     {
-      return s * base.shear_modulus();
+      return s * this->wrapped.shear_modulus();
     }
 
     /// 1/(s kappa): the bulk modulus scales with the others.
     double
     pressure_compliance() const override
     {
-      return base.pressure_compliance() / s;
+      return this->wrapped.pressure_compliance() / s;
     }
 
     /// The factor on the base law's moduli.
@@ -90,8 +80,7 @@ namespace rollnip
     }
 
   private:
-    const MaterialLaw<d> &base;
-    const double          s;
+    const double s;
   };
 } // namespace rollnip
 

@@ -4,8 +4,8 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
-#include <rollnip/material/material_law.h>
 #include <rollnip/material/mooney_rivlin_law.h>
+#include <rollnip/material/wrapping_law.h>
 
 #include <vector>
 
@@ -42,7 +42,7 @@ namespace rollnip
    * it. With every g_i = 0 the law is the Mooney-Rivlin law exactly.
    */
   template <int d>
-  class ViscoelasticLaw final : public MaterialLaw<d>
+  class ViscoelasticLaw final : public WrappingLaw<d>
   {
   public:
     /// The law over the Mooney-Rivlin constants @p C1, @p C2 [MPa], at
@@ -62,18 +62,6 @@ namespace rollnip
     piola_derivative(const dealii::Tensor<2, d> &F,
                      const double                q,
                      const dealii::Tensor<2, d> &dF) const override;
-
-    dealii::Tensor<2, d>
-    pressure_direction(const dealii::Tensor<2, d> &F) const override
-    {
-      return elastic.pressure_direction(F);
-    }
-
-    double
-    constraint(const dealii::Tensor<2, d> &F) const override
-    {
-      return elastic.constraint(F);
-    }
 
     dealii::SymmetricTensor<2, d>
     cauchy(const dealii::Tensor<2, d> &F, const double q) const override;
