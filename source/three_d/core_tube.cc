@@ -58,6 +58,10 @@ namespace rollnip
     check_elastic_core(const Parameters::AllParameters &parameters,
                        const Parameters::ThreeD        &three_d)
     {
+      AssertThrow(parameters.mesh.source == Parameters::MeshSource::builtin,
+                  ExcMessage("Three d/Core = elastic needs Mesh/Source = "
+                             "builtin (the tube is meshed with the builtin "
+                             "cross-section, not with a gmsh one)"));
       const double R1 = parameters.geometry.inner_radius;
       AssertThrow(three_d.core_inner_radius > 0 &&
                     three_d.core_inner_radius < R1,
@@ -93,9 +97,6 @@ namespace rollnip
                         const unsigned int                         level,
                         parallel::distributed::Triangulation<dim> &tria)
     {
-      AssertThrow(parameters.mesh.source == Parameters::MeshSource::builtin,
-                  ExcMessage("Three d: Mesh/Source must be builtin (the "
-                             "slice extrudes the builtin sector annulus)"));
       const auto  &g   = parameters.geometry;
       const double L   = three_d.slice_thickness;
       const double Lb  = three_d.bearing_distance;
