@@ -251,6 +251,15 @@ namespace rollnip
   }
 
   void
+  read_gmsh_cross_section(const Parameters::AllParameters &parameters,
+                          Triangulation<dim>              &coarse)
+  {
+    read_checked_gmsh(parameters, "", coarse);
+    coarse.reset_all_manifolds();
+    coarse.set_all_manifold_ids(numbers::flat_manifold_id);
+  }
+
+  void
   make_roll_mesh(const Parameters::AllParameters           &parameters,
                  parallel::distributed::Triangulation<dim> &triangulation)
   {

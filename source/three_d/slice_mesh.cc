@@ -42,6 +42,69 @@ namespace rollnip
               layer_at_radius(radii, std::hypot(c[0], c[1])));
           }
       }
+
+      /// The builtin sector annulus as an (r, theta, z) box bent into
+      /// Cartesian coordinates; colorize gives ids 0..5 in the order of
+      /// SliceIds.
+      void
+      make_builtin_slice(const Parameters::AllParameters &parameters,
+                         const unsigned int               level,
+                         const double                     thickness,
+                         const std::vector<double>       &axial,
+                         Triangulation<dim>              &coarse)
+      {
+        const auto                            &g     = parameters.geometry;
+        const std::vector<std::vector<double>> steps = {
+          halved_steps(radial_steps(parameters, parameters.mesh.radial_grading),
+                       level),
+          halved_steps(coarse_circumferential_steps(parameters), level),
+          axial};
+        GridGenerator::subdivided_hyper_rectangle(
+          coarse,
+          steps,
+          Point<dim>(g.inner_radius, 0., 0.),
+          Point<dim>(g.outer_radius, g.sector_angle, thickness),
+          /*colorize=*/true);
+        GridTools::transform(
+          [](const Point<dim> &p) {
+            return Point<dim>(p[0] * std::cos(p[1]),
+                              p[0] * std::sin(p[1]),
+                              p[2]);
+          },
+          coarse);
+      }
+
+      /**
+       * The gmsh cross-section of Mesh/Mesh file (checked as in 2D: quads,
+       * ids 0..3 on the arcs and edges of Geometry), refined @p level times
+       * in the polar chart (so a structured annulus halves in r and theta as
+       * the builtin mesh does), then extruded through the z of @p planes.
+       * The side faces keep the 2D ids; z = 0 and z = L get SliceIds.
+       */
+      void
+      make_gmsh_slice(const Parameters::AllParameters &parameters,
+                      const unsigned int               level,
+                      const std::vector<double>       &planes,
+                      Triangulation<dim>              &coarse)
+      {
+        Triangulation<2> section, flat;
+        read_gmsh_cross_section(parameters, section);
+        section.set_all_manifold_ids(0);
+        section.set_manifold(0, PolarManifold<2>(Point<2>()));
+        section.refine_global(level);
+        GridGenerator::flatten_triangulation(section, flat);
+        GridGenerator::extrude_triangulation(flat, planes, coarse);
+        const double tol = 1e-9 * planes.back();
+        for (const auto &face : coarse.active_face_iterators())
+          if (face->at_boundary())
+            {
+              const double z = face->center()[2];
+              if (std::abs(z) < tol)
+                face->set_boundary_id(SliceIds::near_face);
+              else if (std::abs(z - planes.back()) < tol)
+                face->set_boundary_id(SliceIds::far_face);
+            }
+      }
     } // namespace
 
     void
@@ -52,28 +115,18 @@ namespace rollnip
                     parallel::distributed::Triangulation<dim> &triangulation,
                     const double                               axial_grading)
     {
-      AssertThrow(parameters.mesh.source == Parameters::MeshSource::builtin,
-                  ExcMessage("Three d: Mesh/Source must be builtin (the "
-                             "slice extrudes the builtin sector annulus)"));
-      const auto                            &g     = parameters.geometry;
-      const std::vector<std::vector<double>> steps = {
-        halved_steps(radial_steps(parameters, parameters.mesh.radial_grading),
-                     level),
-        halved_steps(coarse_circumferential_steps(parameters), level),
-        axial_steps(thickness, layers, axial_grading)};
-      // (r, theta, z) box; colorize gives ids 0..5 in the order of SliceIds.
       Triangulation<dim> coarse;
-      GridGenerator::subdivided_hyper_rectangle(
-        coarse,
-        steps,
-        Point<dim>(g.inner_radius, 0., 0.),
-        Point<dim>(g.outer_radius, g.sector_angle, thickness),
-        /*colorize=*/true);
-      GridTools::transform(
-        [](const Point<dim> &p) {
-          return Point<dim>(p[0] * std::cos(p[1]), p[0] * std::sin(p[1]), p[2]);
-        },
-        coarse);
+      if (parameters.mesh.source == Parameters::MeshSource::gmsh)
+        make_gmsh_slice(parameters,
+                        level,
+                        axial_planes(thickness, layers, axial_grading),
+                        coarse);
+      else
+        make_builtin_slice(parameters,
+                           level,
+                           thickness,
+                           axial_steps(thickness, layers, axial_grading),
+                           coarse);
       coarse.set_all_manifold_ids(0);
       set_slice_layer_ids(parameters, coarse);
       triangulation.copy_triangulation(coarse);

@@ -1,6 +1,7 @@
 #include <deal.II/base/timer.h>
 
 #include <rollnip/output/atomic_file.h>
+#include <rollnip/three_d/core_stress.h>
 #include <rollnip/three_d/core_tube.h>
 #include <rollnip/three_d/free_end.h>
 #include <rollnip/three_d/load_control.h>
@@ -33,15 +34,16 @@ namespace rollnip
     }
 
     void
-    write_summary(const std::string                            &path,
-                  const three_d::SliceBody                     &body,
-                  const Parameters::AllParameters              &parameters,
-                  const Parameters::ThreeD                     &three_d,
-                  const three_d::SliceNip                      &nip,
-                  const double                                  seconds,
-                  const unsigned int                            processes,
-                  const three_d::FreeEnd                       *free_end,
-                  const std::vector<std::pair<double, double>> &bending)
+    write_summary(const std::string                             &path,
+                  const three_d::SliceBody                      &body,
+                  const Parameters::AllParameters               &parameters,
+                  const Parameters::ThreeD                      &three_d,
+                  const three_d::SliceNip                       &nip,
+                  const double                                   seconds,
+                  const unsigned int                             processes,
+                  const three_d::FreeEnd                        *free_end,
+                  const std::vector<std::pair<double, double>>  &bending,
+                  const std::vector<three_d::CoreBendingStress> &core_stress)
     {
       write_atomically(path, [&](std::ostream &out) {
         out << std::setprecision(8)
@@ -73,6 +75,8 @@ namespace rollnip
               << '\n'
               << "core_deflection_cover_end_mm = "
               << bending[three_d.layers].second << '\n';
+        if (!core_stress.empty())
+          three_d::write_core_stress_summary(out, core_stress.front());
       });
     }
     /// The screen line of one solved nip.
@@ -172,16 +176,23 @@ namespace rollnip
         if (parameters.output.write_vtu)
           body.write_vtu(directory, "slice_3d", nips.size() - 1);
       }
-    const auto                  profile = body.line_load_profile();
-    const three_d::ContactPatch patch   = body.contact_patch();
-    const auto                  bending = three_d.elastic_core
-                                            ? three_d::core_deflection_profile(body)
-                                            : std::vector<std::pair<double, double>>();
+    const auto                  profile     = body.line_load_profile();
+    const three_d::ContactPatch patch       = body.contact_patch();
+    const auto                  bending     = three_d.elastic_core
+                                                ? three_d::core_deflection_profile(body)
+                                                : std::vector<std::pair<double, double>>();
+    const auto                  core_stress = three_d.elastic_core
+                                                ? three_d::core_bending_stress(body)
+                                                : std::vector<three_d::CoreBendingStress>();
     if (root)
       {
         if (!bending.empty())
           write_elastic_core(directory + "/core_deflection_along_axis.csv",
                              bending);
+        if (!core_stress.empty())
+          three_d::write_core_stress(directory +
+                                       "/core_bending_stress_along_axis.csv",
+                                     core_stress);
         write_line_load(directory + "/line_load_along_axis.csv", profile);
         three_d::write_contact_patch(directory + "/contact_patch.txt",
                                      patch,
@@ -211,7 +222,8 @@ namespace rollnip
                       total.wall_time(),
                       Utilities::MPI::n_mpi_processes(communicator),
                       free_ends.empty() ? nullptr : &free_ends.back(),
-                      bending);
+                      bending,
+                      core_stress);
       }
     return 0;
   }

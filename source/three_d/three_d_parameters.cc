@@ -60,12 +60,12 @@ namespace rollnip
                          "false",
                          Patterns::Bool(),
                          "Run the 3D body instead of the 2D cross-section: "
-                         "the builtin mesh of Geometry and Mesh extruded "
-                         "along the roll axis, pressed by the indenter of "
-                         "Contact at the approaches u0 of Contact/Values "
-                         "(Mode = indentation), Q1-P0 or Q2-P1 as "
-                         "Discretization/Element (Q2-P1 with the direct "
-                         "linear solver)");
+                         "the builtin or gmsh cross-section of Geometry and "
+                         "Mesh extruded along the roll axis, pressed by the "
+                         "indenter of Contact at the approaches u0 of "
+                         "Contact/Values (Mode = indentation), Q1-P0 or "
+                         "Q2-P1 as Discretization/Element (Q2-P1 with the "
+                         "direct linear solver)");
       declare_documented(prm,
                          "Slice thickness",
                          "1",

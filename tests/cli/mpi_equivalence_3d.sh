@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# A 3D scene (parameters/slice_3d.prm, or the bent core, short roller or
-# free end with their own outputs) gives the same P(u0) and contact sizes
-# on one and on NP MPI processes, and its parallel output is one .pvtu
-# record with a piece per process.
+# A 3D scene (parameters/slice_3d.prm, or the bent core, short roller,
+# free end or elastic core with their own outputs) gives the same P(u0)
+# and contact sizes on one and on NP MPI processes, and its parallel
+# output is one .pvtu record with a piece per process.
 #
 # Usage: bash mpi_equivalence_3d.sh ROLLNIP MPIEXEC NUMDIFF PRM [NP [METHOD]]
 #
@@ -83,9 +83,10 @@ for f in summary_compared.txt slice_compared.csv; do
     fail "$f differs between 1 and $np MPI processes"
   pass "$f: serial and $np processes agree (rel 1e-8)"
 done
-# The outputs a 3D scene adds: the contact patch, and the line load beside
-# the core's deflection.
-for f in contact_patch.txt core_deflection_along_axis.csv; do
+# The outputs a 3D scene adds: the contact patch, the line load beside
+# the core's deflection, and the elastic core's bending stresses.
+for f in contact_patch.txt core_deflection_along_axis.csv \
+  core_bending_stress_along_axis.csv; do
   [ -f "out_serial/$f" ] || continue
   files_agree "$numdiff" 1e-8 1e-12 "out_serial/$f" "out_parallel/$f" ||
     fail "$f differs between 1 and $np MPI processes"

@@ -30,6 +30,13 @@ namespace rollnip
   check_gmsh_mesh(const Parameters::AllParameters &parameters,
                   const std::string               &prefix);
 
+  /// The gmsh mesh of @p parameters (Mesh/Source = gmsh) into the empty
+  /// @p coarse, checked as make_roll_mesh() checks it, unrefined and
+  /// without manifolds: the cross-section the 3D body extrudes.
+  void
+  read_gmsh_cross_section(const Parameters::AllParameters &parameters,
+                          Triangulation<dim>              &coarse);
+
   /// Sizes of n cells on an interval of length L whose widths grow
   /// geometrically by the total ratio (last / first) given.
   std::vector<double>

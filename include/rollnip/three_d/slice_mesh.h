@@ -35,13 +35,16 @@ namespace rollnip
     halved_steps(const std::vector<double> &steps, const unsigned int level);
 
     /**
-     * The builtin sector annulus of Geometry and Mesh (the same radial and
-     * graded circumferential cells as the 2D fixed mesh) extruded along z
-     * over @p thickness with @p layers cells, into @p triangulation. The
+     * The cross-section of Geometry and Mesh extruded along z over
+     * @p thickness with @p layers cells, into @p triangulation: the builtin
+     * sector annulus (the same radial and graded circumferential cells as
+     * the 2D fixed mesh) or, with Mesh/Source = gmsh, the quadrilateral
+     * cross-section of Mesh/Mesh file (checked as in 2D). The
      * 2D mesh level @p level is built into the coarse mesh by halving
      * every in-plane cell @p level times (in r and theta, as the polar
-     * manifold refines the 2D mesh), so that the slice stays @p layers
-     * cells thick and its vertices are the 2D mesh's at that level. The
+     * manifold refines the 2D mesh; a gmsh mesh in its polar chart), so
+     * that the slice stays @p layers cells thick and its vertices are the
+     * builtin 2D mesh's at that level. The
      * layers thin towards z = @p thickness by @p axial_grading
      * (axial_grading.h). All
      * cells carry a cylindrical manifold about the roll axis (the z axis)
