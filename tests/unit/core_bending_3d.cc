@@ -21,6 +21,7 @@
 #include <sstream>
 
 #include "test_tools.h"
+#include "three_d_test_tools.h"
 
 using namespace rollnip;
 
@@ -39,20 +40,13 @@ namespace
   Parameters::ThreeD
   face(const unsigned int layers, const bool elastic, const std::string &v)
   {
-    Parameters::ThreeD t;
-    t.enabled               = true;
-    t.slice_thickness       = 500;
-    t.layers                = layers;
-    t.axial_grading         = 3;
-    t.fix_far_face          = false;
-    t.approach_step         = 0.5;
-    t.max_newton_iterations = 40;
-    t.core_deflection       = v;
-    t.elastic_core          = elastic;
-    t.core_inner_radius     = 35;
-    t.core_youngs_modulus   = 210000;
-    t.core_poisson_ratio    = 0.3;
-    t.bearing_distance      = 600;
+    auto t              = testing::slice_parameters(500, layers, true, 0.5, 3);
+    t.core_deflection   = v;
+    t.elastic_core      = elastic;
+    t.core_inner_radius = 35;
+    t.core_youngs_modulus = 210000;
+    t.core_poisson_ratio  = 0.3;
+    t.bearing_distance    = 600;
     return t;
   }
 
