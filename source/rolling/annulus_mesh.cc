@@ -2,6 +2,7 @@
 
 #include <deal.II/grid/tria_description.h>
 
+#include <rollnip/boundary_ids.h>
 #include <rollnip/rolling/annulus_mesh.h>
 
 #include <algorithm>
@@ -104,5 +105,16 @@ namespace rollnip
           cells.push_back(c);
         }
     tria.create_triangulation(vertices, cells, SubCellData());
+    // The builtin mesh's ids: the bond and the surface (the temperature's
+    // boundary conditions, CoverTemperature).
+    const double R0 = node_radii.back();
+    for (const auto &cell : tria.cell_iterators_on_level(0))
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          cell->face(f)->set_boundary_id(
+            std::abs(cell->face(f)->center().norm() - R0) <
+                0.5 * (R0 - node_radii[m - 2])
+              ? BoundaryIds::outer_arc
+              : BoundaryIds::inner_arc);
   }
 } // namespace rollnip
