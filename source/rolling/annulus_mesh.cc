@@ -106,15 +106,14 @@ namespace rollnip
         }
     tria.create_triangulation(vertices, cells, SubCellData());
     // The builtin mesh's ids: the bond and the surface (the temperature's
-    // boundary conditions, CoverTemperature).
-    const double R0 = node_radii.back();
+    // boundary conditions, CoverTemperature). A face's vertices lie on its
+    // circle (its centre, on the chord, does not).
+    const double middle = 0.5 * (node_radii.front() + node_radii.back());
     for (const auto &cell : tria.cell_iterators_on_level(0))
       for (const unsigned int f : cell->face_indices())
         if (cell->face(f)->at_boundary())
           cell->face(f)->set_boundary_id(
-            std::abs(cell->face(f)->center().norm() - R0) <
-                0.5 * (R0 - node_radii[m - 2])
-              ? BoundaryIds::outer_arc
-              : BoundaryIds::inner_arc);
+            cell->face(f)->vertex(0).norm() > middle ? BoundaryIds::outer_arc
+                                                     : BoundaryIds::inner_arc);
   }
 } // namespace rollnip

@@ -2,7 +2,8 @@
 // (doc/rolling.md, section 7) against independent truth:
 // - on the full rolling's whole-circle mesh, a uniform source with the
 //   core insulated and the surface cooled gives the closed form of an
-//   annulus (tests/unit/cover_temperature.cc, case B);
+//   annulus (tests/unit/cover_temperature.cc, case B), and with the core
+//   held (case C) on a coarse mesh of a larger roll;
 // - the heat made is the full route's dissipated power (the source's
 //   circles are the rings' radial Gauss points: exact to round-off), and
 //   it leaves through the surface and the core to 1e-6;
@@ -98,6 +99,44 @@ namespace
                     testing::num(Tb) + " (within 0.2 % of the rise)");
   }
 
+  /// A uniform source s [W/m^3] with the core held at T_core and the
+  /// surface cooled, on a whole-circle mesh of a 250 mm roll with few and
+  /// long cells along the circle (where a surface face's centre lies
+  /// deeper than the outermost ring is thick), against the closed form
+  /// of the annulus (tests/unit/cover_temperature.cc, case C).
+  void
+  check_coarse_annulus(testing::Checker &checker)
+  {
+    constexpr double s = 2e4, r1 = 0.1115, r0 = 0.125; // SI
+    AnnulusLayout    layout;
+    layout.layer_radii     = {1e3 * r1, 1e3 * r0};
+    layout.fine_half_angle = 0.1;
+    layout.fine_cells      = 4;
+    layout.growth          = 1.5;
+    layout.radial_cells    = 16;
+    layout.radial_grading  = 0.3;
+    const AnnulusMesh        annulus(layout);
+    SteadyRollingTemperature heat(annulus);
+    std::vector<CircleLoss>  uniform;
+    const auto              &radii = annulus.radii();
+    for (unsigned int j = 0; j + 1 < radii.size(); ++j)
+      for (const double xi : {0.5 - std::sqrt(3.) / 6, 0.5 + std::sqrt(3.) / 6})
+        uniform.push_back(
+          {radii[j] + xi * (radii[j + 1] - radii[j]), 0, 0, s, 0});
+    const auto   T = heat.solve(uniform, thermal(false));
+    const double c = (s * r0 / 2 - h * (T_core - T_air) +
+                      h * s * (r0 * r0 - r1 * r1) / (4 * k)) /
+                     (1 / r0 + h / k * std::log(r0 / r1));
+    const double Ts =
+      T_core - s * (r0 * r0 - r1 * r1) / (4 * k) + c / k * std::log(r0 / r1);
+    checker.check(std::abs(T.surface - Ts) < 1e-2 * std::abs(Ts - T_air),
+                  "uniform source, core 35 degC, coarse circle: T surface " +
+                    testing::num(T.surface) + " degC, closed form " +
+                    testing::num(Ts) +
+                    " (within 1 % of its rise over the "
+                    "air)");
+  }
+
   /// At small V tau / b: the rises of the temperatures that are not held
   /// (over the air's, which they are without a source) in the ratio of
   /// the full and first-order losses, and the heat balance.
@@ -181,6 +220,7 @@ main(int argc, char **argv)
   const double             b       = rolling.result().half_width;
   SteadyRollingTemperature heat(rolling.annulus());
   check_uniform_source(checker, heat, rolling.heat_source());
+  check_coarse_annulus(checker);
 
   for (const double ratio : {0.003, 0.01, 0.1, 0.3, 1.})
     {
