@@ -296,6 +296,36 @@ namespace rollnip
         }
     }
 
+    /// The full steady rolling at the surface speed, if it ran there.
+    void
+    print_full_rolling(const std::vector<ReportRow> &rows)
+    {
+      if (!rows[0].rolling.full.available)
+        return;
+      std::ostream &out = report_stream();
+      out << "Full steady rolling at " << std::setprecision(4)
+          << rows[0].rolling.full.speed
+          << " m/s (at the nip's approach; doc/rolling.md, section 7):"
+          << std::endl
+          << std::setw(16) << "F_r [N/mm]" << std::setw(18)
+          << "drive power [W/m]" << std::setw(16) << "T bond [degC]"
+          << std::setw(18) << "T surface [degC]" << std::setw(15)
+          << "T max [degC]" << std::setw(12) << "P [N/mm]" << std::endl;
+      for (const auto &r : rows)
+        {
+          // A nip whose full rolling did not converge there: nan.
+          FullRolling f = r.rolling.full;
+          if (!f.available)
+            f.rolling_resistance = f.power = f.bond_temperature =
+              f.surface_temperature = f.max_temperature = f.load = std::nan("");
+          out << std::setprecision(4) << std::setw(16) << f.rolling_resistance
+              << std::setw(18) << f.power << std::fixed << std::setprecision(2)
+              << std::setw(16) << f.bond_temperature << std::setw(18)
+              << f.surface_temperature << std::setw(15) << f.max_temperature
+              << std::setw(12) << f.load << std::defaultfloat << std::endl;
+        }
+    }
+
     /// The fixed point of a cover that softens as it heats, if any: the
     /// constant-modulus nip beside the softened one.
     void
@@ -356,6 +386,7 @@ namespace rollnip
             << std::endl;
       print_mate_rolling(rows);
       print_softening(rows);
+      print_full_rolling(rows);
     }
 
     /// The comparisons at each load, and the widths at the ends of the

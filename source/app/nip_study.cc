@@ -22,6 +22,7 @@
 #include <rollnip/rolling/mate_rolling.h>
 #include <rollnip/rolling/rolling_evaluation.h>
 #include <rollnip/rolling/rolling_parameters.h>
+#include <rollnip/rolling/steady_rolling_report.h>
 #include <rollnip/rolling/steady_rolling_sweep.h>
 #include <rollnip/rolling/thermal_fixed_point.h>
 #include <rollnip/run_errors.h>
@@ -815,9 +816,11 @@ namespace rollnip
             steady_rolling_scene(parameters, rolling, row.nonlinear.theta0),
             rolling,
             row.nonlinear.indentation,
-            &std::cout);
+            &std::cout,
+            parameters.output.write_vtu ? dir : "");
           if (parameters.output.write_csv)
             write_steady_rolling(rows, dir);
+          row.rolling.full = full_rolling_numbers(rows, rolling.speeds.front());
         }
     }
 
@@ -901,6 +904,7 @@ namespace rollnip
         row.rolling.available
           ? rolling_lines(row.rolling) + thermal_lines(row.rolling) +
               mate_rolling_lines(row.rolling) +
+              full_rolling_lines(row.rolling) +
               "nip_solve_wall_time_s = " + std::to_string(nip_seconds) + '\n'
           : "";
       write_nip(nonlinear,

@@ -2,6 +2,7 @@
 
 #include <deal.II/grid/tria_description.h>
 
+#include <rollnip/boundary_ids.h>
 #include <rollnip/rolling/annulus_mesh.h>
 
 #include <algorithm>
@@ -104,5 +105,15 @@ namespace rollnip
           cells.push_back(c);
         }
     tria.create_triangulation(vertices, cells, SubCellData());
+    // The builtin mesh's ids: the bond and the surface (the temperature's
+    // boundary conditions, CoverTemperature). A face's vertices lie on its
+    // circle (its centre, on the chord, does not).
+    const double middle = 0.5 * (node_radii.front() + node_radii.back());
+    for (const auto &cell : tria.cell_iterators_on_level(0))
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          cell->face(f)->set_boundary_id(
+            cell->face(f)->vertex(0).norm() > middle ? BoundaryIds::outer_arc
+                                                     : BoundaryIds::inner_arc);
   }
 } // namespace rollnip

@@ -2,7 +2,7 @@
 #include <rollnip/rolling/cover_temperature.h>
 #include <rollnip/rolling/first_order_loss.h>
 #include <rollnip/rolling/mate_rolling.h>
-#include <rollnip/rolling/rolling_evaluation.h>
+#include <rollnip/rolling/radial_heat_source.h>
 
 #include <algorithm>
 #include <iomanip>
@@ -27,7 +27,7 @@ namespace rollnip
                           degree,
                           geometry.sector_angle);
     const CoverTemperatureResult T =
-      heat.solve(radial_heat_source(loss, degree), mate_rolling);
+      heat.solve(radial_heat_source(loss.circles, degree), mate_rolling);
     MateRolling m;
     m.available           = true;
     m.rolling_resistance  = loss.rolling_resistance;

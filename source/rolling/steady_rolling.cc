@@ -95,6 +95,7 @@ namespace rollnip
     samples.resize(triangulation.n_active_cells() * 2);
     circle_samples.assign(2 * layout.n_rings(), std::vector<unsigned int>(n));
     circle_weight.assign(circle_samples.size(), 0.);
+    circle_dissipation.assign(circle_samples.size(), 0.);
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         const unsigned int c = cell->active_cell_index();
@@ -131,15 +132,35 @@ namespace rollnip
     std::vector<MaterialCircle> result;
     for (unsigned int k = 0; k < circle_samples.size(); ++k)
       {
-        MaterialCircle circle{0, circle_weight[k], 0, {}};
+        MaterialCircle circle{circle_radius(k), circle_weight[k], 0, {}};
         for (const unsigned int s : circle_samples[k])
           {
-            circle.radius += samples[s].radius / circle_samples[k].size();
             circle.layer = samples[s].layer;
             circle.samples.push_back({samples[s].theta, E[s], S[s]});
           }
         result.push_back(std::move(circle));
       }
     return result;
+  }
+
+  double
+  SteadyRolling::circle_radius(const unsigned int k) const
+  {
+    const unsigned int j = k / 2, a = k % 2;
+    const double       r0 = layout.radii()[j], r1 = layout.radii()[j + 1];
+    return r0 + circle_quadrature(1).radial_coordinate[a] * (r1 - r0);
+  }
+
+  std::vector<CircleLoss>
+  SteadyRolling::heat_source() const
+  {
+    std::vector<CircleLoss> source;
+    for (unsigned int k = 0; k < circle_samples.size(); ++k)
+      source.push_back({circle_radius(k),
+                        circle_weight[k],
+                        samples[circle_samples[k][0]].layer,
+                        circle_dissipation[k],
+                        0.});
+    return source;
   }
 } // namespace rollnip

@@ -14,7 +14,8 @@ namespace rollnip
         s.c           = 0;
         s.H_cartesian = 0;
       }
-    dissipated         = 0;
+    dissipated = 0;
+    std::fill(circle_dissipation.begin(), circle_dissipation.end(), 0.);
     const double start = u0;
     converged          = false;
     for (unsigned int s = 1; s <= steps; ++s)

@@ -96,7 +96,8 @@ namespace rollnip
             samples[ids[m]].c = 0;
             samples[ids[m]].H = {{0, 0, 0}};
           }
-        const unsigned int l = samples[ids[0]].layer;
+        circle_dissipation[k] = 0;
+        const unsigned int l  = samples[ids[0]].layer;
         const auto        &branches =
           scene.viscous.size() == 1 ? scene.viscous[0] : scene.viscous.at(l);
         for (unsigned int b = 0; b < branches.g.size(); ++b)
@@ -109,8 +110,13 @@ namespace rollnip
                 for (unsigned int i = 0; i < 3; ++i)
                   samples[ids[m]].H[i] += h.H[m][i];
               }
-            power += circle_weight[k] * Omega *
-                     branch_work(theta, Sk, Ek, h, g, tau, Omega);
+            // MPa/s = 1e6 W/m^3 over the turn's 2 pi; times the circle's
+            // area per radian, MPa/s mm^2 = W/m.
+            const double mean = Omega *
+                                branch_work(theta, Sk, Ek, h, g, tau, Omega) /
+                                (2 * numbers::PI);
+            circle_dissipation[k] += 1e6 * mean;
+            power += circle_weight[k] * 2 * numbers::PI * mean;
           }
       }
     return power;

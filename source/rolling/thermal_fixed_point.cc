@@ -3,7 +3,7 @@
 #include <rollnip/rolling/cover_circles.h>
 #include <rollnip/rolling/cover_temperature.h>
 #include <rollnip/rolling/first_order_loss.h>
-#include <rollnip/rolling/rolling_evaluation.h>
+#include <rollnip/rolling/radial_heat_source.h>
 #include <rollnip/rolling/thermal_fixed_point.h>
 
 #include <algorithm>
@@ -44,7 +44,8 @@ namespace rollnip
                             body.mapping(),
                             degree,
                             geometry.sector_angle);
-      pass.heat = heat.solve(radial_heat_source(pass.loss, degree), rolling);
+      pass.heat =
+        heat.solve(radial_heat_source(pass.loss.circles, degree), rolling);
       return pass;
     }
 

@@ -39,7 +39,9 @@ namespace rollnip
    * and growing geometrically beyond it, symmetric about theta = 0; node
    * radii per layer. Cell (ring j, sector i) is cell number j * n + i, its
    * unit x runs outward and unit y along increasing theta, its material id
-   * is its layer. The ring closes on itself (no symmetry edge).
+   * is its layer. The ring closes on itself (no symmetry edge); the bond
+   * and the surface carry the builtin mesh's boundary ids (inner_arc,
+   * outer_arc).
    */
   class AnnulusMesh
   {

@@ -13,13 +13,6 @@
 
 namespace rollnip
 {
-  /// The mean dissipation density of @p loss as a function of the radius
-  /// r [mm] -> [W/m^3]: in each ring of cells the polynomial through its
-  /// circles (exact in the ring's radial Gauss rule), zero outside the
-  /// cover.
-  std::function<double(double)>
-  radial_heat_source(const RollingLoss &loss, const unsigned int degree);
-
   /**
    * The rolling post-process of the converged nip @p nip of @p body
    * (collective): the circles' strain history, the first-order loss at

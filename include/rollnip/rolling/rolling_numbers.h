@@ -20,6 +20,25 @@ namespace rollnip
     double speed_over_nip = 0; ///< V tau / b with its longest time
   };
 
+  /// The full steady rolling's loss and cover temperature at Rolling/
+  /// Surface speed (doc/rolling.md, section 7), and the hottest of its
+  /// speeds, in the engineer's units.
+  struct FullRolling
+  {
+    bool   ran                = false; ///< a full speed converged
+    bool   available          = false; ///< Surface speed is a full speed
+    double speed              = 0;     ///< [m/s]
+    double rolling_resistance = 0;     ///< dissipation / V [N/mm]
+    double power              = 0;     ///< dissipated = drive power [W/m]
+    double load               = 0;     ///< P at the nip's approach [N/mm]
+    double bond_temperature = 0, surface_temperature = 0,
+           max_temperature = 0;                                   ///< [degC]
+    double heat_generated = 0, heat_to_air = 0, heat_to_core = 0; ///< [W/m]
+    /// The converged full speed with the largest cover temperature [m/s]
+    /// and that temperature [degC].
+    double hottest_speed = 0, hottest_temperature = 0;
+  };
+
   /// What the rolling post-process reports of one nip at Rolling/Surface
   /// speed (doc/rolling.md), in the engineer's units.
   struct RollingNumbers
@@ -48,6 +67,8 @@ namespace rollnip
     ThermalCoupling thermal;
     /// The covered mating roll's own loss, if there is one.
     MateRolling mate;
+    /// The full steady rolling's, if Rolling/Full steady rolling.
+    FullRolling full;
   };
 } // namespace rollnip
 

@@ -20,6 +20,7 @@
 #include <rollnip/parameters.h>
 #include <rollnip/rolling/annulus_mesh.h>
 #include <rollnip/rolling/cover_circles.h>
+#include <rollnip/rolling/first_order_loss.h>
 #include <rollnip/rolling/periodic_relaxation.h>
 #include <rollnip/rolling/rolling_parameters.h>
 
@@ -101,6 +102,22 @@ namespace rollnip
     std::vector<MaterialCircle>
     circles() const;
 
+    /// The heat source of the current state: per circle (by increasing
+    /// radius, two per ring at its radial Gauss points) the dissipation
+    /// density averaged over a turn [W/m^3], whose area integral is the
+    /// dissipated power of result(); zero at zero speed. The input of the
+    /// temperature solve (radial_heat_source(), degree 1). The peak is not
+    /// computed (0).
+    std::vector<CircleLoss>
+    heat_source() const;
+
+    /// The whole-circle mesh's layout (for the temperature's own mesh).
+    const AnnulusMesh &
+    annulus() const
+    {
+      return layout;
+    }
+
     unsigned int
     n_dofs() const
     {
@@ -173,6 +190,11 @@ namespace rollnip
     double
     circle_histories();
     /// The polar S_iso and E at every sample of the current state.
+    /// The reference radius of circle @p k [mm]: its radial Gauss point
+    /// between the ring's node radii (the radius the temperature's source
+    /// is taken at, CoverTemperature).
+    double
+    circle_radius(const unsigned int k) const;
     void
     point_fields(std::vector<PolarTensor> &S,
                  std::vector<PolarTensor> &E) const;
@@ -207,6 +229,8 @@ namespace rollnip
     /// The samples of each circle, by increasing angle.
     std::vector<std::vector<unsigned int>> circle_samples;
     std::vector<double>                    circle_weight;
+    /// Each circle's dissipation density, mean over a turn [W/m^3].
+    std::vector<double> circle_dissipation;
 
     double       u0 = 0, speed = 0, dissipated = 0;
     unsigned int newton_count = 0, fixed_point_count = 0;

@@ -1,0 +1,71 @@
+#include <rollnip/rolling/steady_rolling_report.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace rollnip
+{
+  FullRolling
+  full_rolling_numbers(const std::vector<SteadyRollingRow> &rows,
+                       const double                         surface_speed)
+  {
+    FullRolling f;
+    for (const auto &row : rows)
+      {
+        if (!row.full.converged)
+          continue;
+        const auto &T = row.temperature;
+        if (!f.ran || T.max > f.hottest_temperature)
+          {
+            f.hottest_speed       = row.full.speed;
+            f.hottest_temperature = T.max;
+          }
+        f.ran = true;
+        if (std::abs(row.full.speed - surface_speed) >
+            1e-12 * std::abs(surface_speed))
+          continue;
+        f.available           = true;
+        f.speed               = row.full.speed;
+        f.rolling_resistance  = row.full.resistance_energy;
+        f.power               = row.full.power;
+        f.load                = row.full.load;
+        f.bond_temperature    = T.bond;
+        f.surface_temperature = T.surface;
+        f.max_temperature     = T.max;
+        f.heat_generated      = T.generated;
+        f.heat_to_air         = T.to_air;
+        f.heat_to_core        = T.to_core;
+      }
+    return f;
+  }
+
+  std::string
+  full_rolling_lines(const RollingNumbers &n)
+  {
+    const FullRolling &f = n.full;
+    if (!f.ran)
+      return "";
+    std::ostringstream out;
+    out << std::setprecision(8)
+        << "# full steady rolling at the nip's approach (doc/rolling.md, "
+           "section 7)\n";
+    if (f.available)
+      out << "full_rolling_speed_m_per_s = " << f.speed << '\n'
+          << "full_rolling_resistance_N_per_mm = " << f.rolling_resistance
+          << '\n'
+          << "full_rolling_drive_power_W_per_m = " << f.power << '\n'
+          << "full_rolling_load_N_per_mm = " << f.load << '\n'
+          << "full_cover_bond_temperature_degC = " << f.bond_temperature << '\n'
+          << "full_cover_surface_temperature_degC = " << f.surface_temperature
+          << '\n'
+          << "full_cover_max_temperature_degC = " << f.max_temperature << '\n'
+          << "full_heat_generated_W_per_m = " << f.heat_generated << '\n'
+          << "full_heat_to_air_W_per_m = " << f.heat_to_air << '\n'
+          << "full_heat_to_core_W_per_m = " << f.heat_to_core << '\n';
+    out << "full_rolling_hottest_speed_m_per_s = " << f.hottest_speed << '\n'
+        << "full_rolling_hottest_max_temperature_degC = "
+        << f.hottest_temperature << '\n';
+    return out.str();
+  }
+} // namespace rollnip
