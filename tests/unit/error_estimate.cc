@@ -260,6 +260,15 @@ main(int argc, char **argv)
                      layers ? "1, 1.5, 2" : "0.5, 1, 2, 3",
                      layers ? layered_cover : "");
       halve_coarse_mesh(p.mesh);
+      // 8 x 18 coarse cells with 6 in the nip: 4 x 11 with 5, whose level
+      // 1 has the 12 cells beyond the nip of the file's level 0 and 10
+      // nip cells.
+      checker.check(
+        p.mesh.radial_cells == 4 && p.mesh.circumferential_cells == 11 &&
+          p.mesh.nip_cells == 5,
+        "the halved coarse mesh: " + std::to_string(p.mesh.radial_cells) +
+          " x " + std::to_string(p.mesh.circumferential_cells) + " cells, " +
+          std::to_string(p.mesh.nip_cells) + " in the nip (4 x 11, 5)");
       check_scene(checker,
                   effectivity,
                   p,
