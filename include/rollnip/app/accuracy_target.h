@@ -44,10 +44,29 @@ namespace rollnip
     /// relative: DoFs of the run's roll plus those of its error
     /// estimate's companion, weighted by its measured relative cost
     double cost;
+    /// Solved on the halved coarse mesh (halve_coarse_mesh()) rather
+    /// than the file's: one refinement of it is the file's level-0 mesh
+    /// with more nip cells, and its error estimate's companion is then
+    /// the cheap coarse level instead of the finer one.
+    bool halved_mesh = false;
   };
 
-  /// The candidates, cheapest first: Q1-P0 at levels 0 to 4 and Q2-P1 at
-  /// levels 0 to 3, ordered by the DoFs on the builtin mesh of the run
+  /**
+   * The coarse mesh of the halved-mesh candidates: half the radial cells
+   * and half the circumferential cells beyond the nip (rounded up, at
+   * least two beyond the nip), and 5/6 of the nip cells (at least two).
+   * Refined once it has the file's radial cells and cells beyond the nip
+   * and 5/3 of its nip cells: on the default scene 4 x 11 coarse cells,
+   * 5 in the nip, whose level 1 has 8 x 22 cells, 10 in the nip, where the
+   * file's level 0 has 8 x 18 with 6 (doc/accuracy.md, "An accuracy
+   * target").
+   */
+  void
+  halve_coarse_mesh(Parameters::Mesh &mesh);
+
+  /// The candidates, cheapest first: Q1-P0 at levels 0 to 4, Q2-P1 at
+  /// levels 0 to 3 and Q2-P1 on the halved coarse mesh at levels 1 to 3,
+  /// ordered by the DoFs on the builtin mesh of the run
   /// and of its error estimate's companion (Q2-P1 has about 3.5 times the
   /// DoFs of Q1-P0 at the same level; the companion of a level-0 run is
   /// the finer level 1, so Q1-P0 at level 1 costs about as much as at
