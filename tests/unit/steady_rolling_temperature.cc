@@ -229,8 +229,7 @@ main(int argc, char **argv)
                     "converged at V tau / b = " + testing::num(ratio));
       const auto r     = rolling.result();
       const auto first = first_order_whole_turn(circles, thermal(false), R0, V);
-      const std::string at   = "V tau / b = " + testing::num(ratio);
-      const double      loss = r.resistance_energy / first.rolling_resistance;
+      const std::string at = "V tau / b = " + testing::num(ratio);
       if (ratio <= 0.01)
         for (const bool insulated : {false, true})
           check_low_speed(checker,
