@@ -123,8 +123,8 @@ namespace rollnip
       /// form with @p law at the quadrature points of @p fv, where u has
       /// the gradients @p grad_u and q the values @p q; c(F, q) = J - 1 -
       /// q/kappa gives the pressure block -M_p/kappa. Returns the integral
-      /// of c over the cell and the cell's volume.
-      std::pair<double, double>
+      /// of c over the cell.
+      double
       add_cell_terms(const FEValues<dim>               &fv,
                      const MaterialLaw<dim>            &law,
                      const std::vector<Tensor<2, dim>> &grad_u,
@@ -138,7 +138,7 @@ namespace rollnip
         std::vector<Tensor<2, dim>>      grad_phi(n), dP(n);
         std::vector<double>              psi(n);
         const double                     compliance = law.pressure_compliance();
-        double                           cell_constraint = 0, cell_volume = 0;
+        double                           cell_constraint = 0;
         for (unsigned int k = 0; k < grad_u.size(); ++k)
           {
             const Tensor<2, dim> F   = unit_symmetric_tensor<dim>() + grad_u[k];
@@ -147,7 +147,6 @@ namespace rollnip
             const double         g   = law.constraint(F) - compliance * q[k];
             const double         dx  = fv.JxW(k);
             cell_constraint += g * dx;
-            cell_volume += dx;
             for (unsigned int i = 0; i < n; ++i)
               {
                 grad_phi[i] = fv[u_ex].gradient(i, k);
@@ -166,7 +165,7 @@ namespace rollnip
                     dx;
               }
           }
-        return {cell_constraint, cell_volume};
+        return cell_constraint;
       }
     } // namespace
 
@@ -315,7 +314,7 @@ namespace rollnip
             R = 0;
             fv[u_ex].get_function_gradients(solution, grad_u);
             fv[q_ex].get_function_values(solution, q);
-            const auto [cell_constraint, cell_volume] = add_cell_terms(
+            const double cell_constraint = add_cell_terms(
               fv, *layer_laws[cell->material_id()], grad_u, q, K, R);
             constraint_error += std::abs(cell_constraint);
             cell->get_dof_indices(dofs);
