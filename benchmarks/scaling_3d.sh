@@ -14,7 +14,9 @@
 # Environment: ROLLNIP_BIN (default build/rollnip), PROCESSES (default
 # "1 2 4"), SOLVERS (default "direct gmres-amg"), U0 (the approaches, default "0.5" mm: one approach step, so
 # that a run is a few Newton steps), MPIEXEC (default mpirun),
-# RUN_TIMEOUT (seconds per run, default 900).
+# RUN_TIMEOUT (seconds per run, default 900), ELEMENT
+# (Discretization/Element: Q1-P0, the default, or Q2-P1; Q2-P1 has about
+# 1.6 times the DoFs of Q1-P0 at one level lower: 3:2 is 0.63 M).
 #
 # Columns:
 #   level, layers   Mesh/Global refinements, Three d/Layers
@@ -47,6 +49,7 @@ processes="${PROCESSES:-1 2 4}"
 solvers="${SOLVERS:-direct gmres-amg}"
 u0="${U0:-0.5}"
 run_timeout="${RUN_TIMEOUT:-900}"
+element="${ELEMENT:-Q1-P0}"
 csv="${SCALING_CSV:-$repo_root/benchmarks/results/scaling_3d.csv}"
 [ -x "$rollnip" ] || { echo "scaling_3d: error: no executable '$rollnip'" >&2; exit 1; }
 [ -x /usr/bin/time ] || { echo "scaling_3d: error: needs GNU time (/usr/bin/time)" >&2; exit 1; }
@@ -73,7 +76,8 @@ RANK
 chmod +x "$work/rank.sh"
 
 mkdir -p "$(dirname "$csv")"
-echo "level,layers,dofs,solver,processes,oversubscribed,wall_time_s,sweep_time_s,cpu_time_s,newton_steps,gmres_iterations,peak_rss_per_rank_MB,peak_rss_total_MB,P_N_per_mm,u0_mm,load_average" > "$csv"
+echo "element,level,layers,dofs,solver,processes,oversubscribed,wall_time_s,sweep_time_s,cpu_time_s,newton_steps,gmres_iterations,peak_rss_per_rank_MB,peak_rss_total_MB,P_N_per_mm,u0_mm,load_average" > "$csv"
+echo "element: $element"
 printf '%5s %6s %9s %9s %3s %7s %8s %8s %8s %6s %6s %12s %9s %10s %5s\n' level layers DoFs solver np oversub "wall s" "sweep s" "CPU s" Newton GMRES "peak MB/rank" "total MB" "P N/mm" load
 for size in "${sizes[@]}"; do
   level="${size%%:*}"
@@ -98,6 +102,9 @@ end
 subsection Linear solver
   set Method = $solver
 end
+subsection Discretization
+  set Element = $element
+end
 subsection Output
   set Directory = $out
   set Write VTU = false
@@ -119,8 +126,8 @@ PRM
       "${launcher[@]}" "$work/rank.sh" "$rollnip" "$prm" > "$work/log.txt" 2>&1 || rc=$?
     if [ "$rc" -ne 0 ]; then
       tail -n 5 "$work/log.txt" >&2
-      echo "scaling_3d: level $level, $layers layers, $solver, $np processes: failed (exit $rc; 137 or 124: stopped after ${run_timeout} s)" >&2
-      echo "$level,$layers,,$solver,$np,$oversub,,,,,,,,,$u0,$(cut -d' ' -f1 /proc/loadavg)" >> "$csv"
+      echo "scaling_3d: $element, level $level, $layers layers, $solver, $np processes: failed (exit $rc; 137 or 124: stopped after ${run_timeout} s)" >&2
+      echo "$element,$level,$layers,,$solver,$np,$oversub,,,,,,,,,$u0,$(cut -d' ' -f1 /proc/loadavg)" >> "$csv"
       continue
     fi
     s="$out/summary.txt"
@@ -134,7 +141,7 @@ PRM
     read -r peak total cpu < <(cat "$work"/mem/mem.* | awk '$1 ~ /^[0-9]+$/ { if ($1 > m) m = $1; t += $1; c += $2 + $3 } END { printf "%.0f %.0f %.1f\n", m / 1024, t / 1024, c }')
     printf '%5d %6d %9d %9s %3d %7s %8.1f %8.1f %8.1f %6d %6d %12d %9d %10.6f %5s\n' \
       "$level" "$layers" "$dofs" "$solver" "$np" "$oversub" "$elapsed" "$sweep" "$cpu" "$newton" "$gmres" "$peak" "$total" "$P" "$load"
-    echo "$level,$layers,$dofs,$solver,$np,$oversub,$elapsed,$sweep,$cpu,$newton,$gmres,$peak,$total,$P,$u0,$load" >> "$csv"
+    echo "$element,$level,$layers,$dofs,$solver,$np,$oversub,$elapsed,$sweep,$cpu,$newton,$gmres,$peak,$total,$P,$u0,$load" >> "$csv"
   done
   done
 done

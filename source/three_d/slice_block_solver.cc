@@ -41,53 +41,107 @@ namespace rollnip
         , max_iterations(max_iterations)
     {}
 
+    FullMatrix<double>
+    cell_pressure_mass(const FEValues<dim> &fv)
+    {
+      const auto               &fe = fv.get_fe();
+      std::vector<unsigned int> p;
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+        if (fe.system_to_component_index(i).first == dim)
+          p.push_back(i);
+      FullMatrix<double> M(p.size(), p.size());
+      for (unsigned int k = 0; k < fv.n_quadrature_points; ++k)
+        for (unsigned int a = 0; a < p.size(); ++a)
+          for (unsigned int b = 0; b < p.size(); ++b)
+            M(a, b) += fv.shape_value_component(p[a], k, dim) *
+                       fv.shape_value_component(p[b], k, dim) * fv.JxW(k);
+      return M;
+    }
+
     void
-    SliceBlockSolver::setup(const DoFHandler<dim> &dof_handler,
+    SliceBlockSolver::setup(const Mapping<dim>    &mapping,
+                            const DoFHandler<dim> &dof_handler,
                             const double           schur_modulus)
     {
       fresh_iterations = last_iterations = 0;
-      const IndexSet   &owned            = dof_handler.locally_owned_dofs();
-      const MPI_Comm    communicator     = dof_handler.get_communicator();
-      const auto       &fe               = dof_handler.get_fe();
       std::vector<bool> u_components(dim + 1, true);
       u_components[dim] = false;
       DoFTools::extract_constant_modes(dof_handler,
                                        ComponentMask(u_components),
                                        constant_modes);
-      const unsigned int n_owned = owned.n_elements();
+      collect_rigid_modes(mapping, dof_handler);
+      collect_schur_blocks(mapping, dof_handler, schur_modulus);
+    }
+
+    void
+    SliceBlockSolver::collect_rigid_modes(const Mapping<dim>    &mapping,
+                                          const DoFHandler<dim> &dof_handler)
+    {
+      // Every owned dof lies on an owned cell; with Q2 the edge, face and
+      // cell nodes sit on the mapped (curved) cell, where the dofs live.
+      const IndexSet       &owned   = dof_handler.locally_owned_dofs();
+      const auto           &fe      = dof_handler.get_fe();
+      const unsigned int    n_owned = owned.n_elements();
+      const Quadrature<dim> support(
+        fe.base_element(0).get_unit_support_points());
+      FEValues<dim> fv(mapping, fe, support, update_quadrature_points);
       rigid_modes.assign(2 * dim * n_owned, 0.);
-      schur_diagonal.reinit(owned, communicator);
-      displacement_mask.reinit(owned, communicator);
-      // M_p of the P0 pressure is |cell| (the reference volume is the
-      // current one of an incompressible body).
-      const QGauss<dim>  quadrature(2);
-      FEValues<dim>      fv(fe, quadrature, update_JxW_values);
-      const unsigned int p_local = fe.component_to_system_index(dim, 0);
+      displacement_mask.reinit(owned, dof_handler.get_communicator());
       std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
             fv.reinit(cell);
-            double volume = 0;
-            for (unsigned int k = 0; k < quadrature.size(); ++k)
-              volume += fv.JxW(k);
             cell->get_dof_indices(dofs);
-            schur_diagonal[dofs[p_local]] = schur_modulus / volume;
-            for (const unsigned int v : cell->vertex_indices())
-              for (unsigned int c = 0; c < dim; ++c)
-                {
-                  const auto dof = cell->vertex_dof_index(v, c);
-                  if (!owned.is_element(dof))
-                    continue;
-                  displacement_mask[dof] = 1.;
-                  const auto row         = owned.index_within_set(dof);
-                  for (unsigned int m = 0; m < 2 * dim; ++m)
-                    rigid_modes[m * n_owned + row] =
-                      rigid_mode(m, c, cell->vertex(v));
-                }
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              {
+                const auto [c, k] = fe.system_to_component_index(i);
+                if (c >= dim || !owned.is_element(dofs[i]))
+                  continue;
+                displacement_mask[dofs[i]] = 1.;
+                const auto row             = owned.index_within_set(dofs[i]);
+                for (unsigned int m = 0; m < 2 * dim; ++m)
+                  rigid_modes[m * n_owned + row] =
+                    rigid_mode(m, c, fv.quadrature_point(k));
+              }
           }
-      schur_diagonal.compress(VectorOperation::insert);
       displacement_mask.compress(VectorOperation::insert);
+    }
+
+    void
+    SliceBlockSolver::collect_schur_blocks(const Mapping<dim>    &mapping,
+                                           const DoFHandler<dim> &dof_handler,
+                                           const double           schur_modulus)
+    {
+      // The element's quadrature, so that M_K is the mass matrix of the
+      // augmentation (SliceBody::assemble()) and exact for P1 x P1 on
+      // the cell. The reference volume is the current one of an
+      // incompressible body.
+      const IndexSet   &owned = dof_handler.locally_owned_dofs();
+      const auto       &fe    = dof_handler.get_fe();
+      const QGauss<dim> quadrature(fe.base_element(0).degree + 1);
+      FEValues<dim>     fv(mapping,
+                       fe,
+                       quadrature,
+                       update_values | update_JxW_values);
+      n_pressure = fe.base_element(1).n_dofs_per_cell();
+      schur_rows.clear();
+      schur_blocks.clear();
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fv.reinit(cell);
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              if (fe.system_to_component_index(i).first == dim)
+                schur_rows.push_back(owned.index_within_set(dofs[i]));
+            FullMatrix<double> inverse = cell_pressure_mass(fv);
+            inverse.gauss_jordan();
+            for (unsigned int a = 0; a < n_pressure; ++a)
+              for (unsigned int b = 0; b < n_pressure; ++b)
+                schur_blocks.push_back(schur_modulus * inverse(a, b));
+          }
     }
 
     void
@@ -139,11 +193,23 @@ namespace rollnip
       tmp.scale(displacement_mask);
       amg.vmult(z, tmp);
       z.scale(displacement_mask);
-      // z_p = S^-1 (B z_u - r_p), B z_u the pressure rows of K [z_u; 0].
+      // z_p = S^-1 (B z_u - r_p), B z_u the pressure rows of K [z_u; 0],
+      // cell by cell on the locally owned rows (a cell's pressure dofs
+      // are owned with it).
       matrix->vmult(tmp, z);
       tmp -= r;
-      tmp.scale(schur_diagonal);
-      z += tmp;
+      const double *t     = tmp.begin();
+      double       *z_own = z.begin();
+      const double *block = schur_blocks.data();
+      for (std::size_t first = 0; first < schur_rows.size();
+           first += n_pressure, block += n_pressure * n_pressure)
+        for (unsigned int a = 0; a < n_pressure; ++a)
+          {
+            double value = 0;
+            for (unsigned int b = 0; b < n_pressure; ++b)
+              value += block[a * n_pressure + b] * t[schur_rows[first + b]];
+            z_own[schur_rows[first + a]] = value;
+          }
     }
 
     void

@@ -47,61 +47,84 @@ namespace rollnip
         return Point<2>(x[0], x[1]);
       }
 
+      /// The cell's pressure dofs (local indices).
+      std::vector<unsigned int>
+      pressure_dofs(const FESystem<dim> &fe)
+      {
+        std::vector<unsigned int> p;
+        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+          if (fe.system_to_component_index(i).first == dim)
+            p.push_back(i);
+        return p;
+      }
+
       /// The augmented Lagrangian form of the cell's Newton system: every
-      /// displacement row plus gamma / |cell| B^T times the cell's pressure
-      /// row (the linearised constraint of this cell alone, P0), so that
-      /// A becomes A + gamma B^T M_p^-1 B with the same solution.
+      /// displacement row plus gamma B_K^T M_K^-1 times the cell's
+      /// pressure rows (the linearised constraint, tested with the cell's
+      /// discontinuous pressure functions, involves this cell alone), so
+      /// that A becomes A + gamma B^T M_p^-1 B with the same solution.
+      /// @p inverse_mass: M_K^-1 (1 / |cell| for P0, 4x4 for P1).
       void
-      augment_cell_system(const FESystem<dim> &fe,
-                          const double         volume,
-                          const double         gamma,
-                          FullMatrix<double>  &K,
-                          Vector<double>      &R)
+      augment_cell_system(const FESystem<dim>      &fe,
+                          const FullMatrix<double> &inverse_mass,
+                          const double              gamma,
+                          FullMatrix<double>       &K,
+                          Vector<double>           &R)
       {
         if (gamma == 0)
           return;
-        const unsigned int n = fe.n_dofs_per_cell();
-        const unsigned int p = fe.component_to_system_index(dim, 0);
-        const double       w = gamma / volume;
+        const unsigned int              n = fe.n_dofs_per_cell();
+        const std::vector<unsigned int> p = pressure_dofs(fe);
+        std::vector<double>             b(p.size());
         for (unsigned int i = 0; i < n; ++i)
-          if (i != p)
+          if (fe.system_to_component_index(i).first < dim)
             {
-              const double b_i = w * K(i, p);
-              // j = p too: a compressible cover's K(p, p) = -|cell|/kappa.
-              for (unsigned int j = 0; j < n; ++j)
-                K(i, j) += b_i * K(p, j);
-              R(i) += b_i * R(p);
+              // b = gamma M_K^-1 B_K(:, i), from row i before it changes.
+              for (unsigned int a = 0; a < p.size(); ++a)
+                {
+                  b[a] = 0;
+                  for (unsigned int c = 0; c < p.size(); ++c)
+                    b[a] += gamma * inverse_mass(a, c) * K(i, p[c]);
+                }
+              // The pressure columns too: a compressible cover's K(p, p)
+              // = -M_K / kappa.
+              for (unsigned int a = 0; a < p.size(); ++a)
+                {
+                  for (unsigned int j = 0; j < n; ++j)
+                    K(i, j) += b[a] * K(p[a], j);
+                  R(i) += b[a] * R(p[a]);
+                }
             }
       }
 
-      /// The cell matrix of [A 0; 0 M_p/G] for the AMG: the displacement
-      /// block of @p K and, for the P0 pressure, |cell| / G on the diagonal.
+      /// The cell matrix of [A 0; 0 M_p/G'] for the AMG: the displacement
+      /// block of @p K and the cell's pressure mass @p mass over G'.
       void
       make_augmented_cell_matrix(const FESystem<dim>      &fe,
                                  const FullMatrix<double> &K,
-                                 const double              pressure_diagonal,
+                                 const FullMatrix<double> &mass,
+                                 const double              schur_modulus,
                                  FullMatrix<double>       &augmented)
       {
-        const unsigned int n = fe.n_dofs_per_cell();
+        const unsigned int              n = fe.n_dofs_per_cell();
+        const std::vector<unsigned int> p = pressure_dofs(fe);
         augmented.reinit(n, n);
         for (unsigned int i = 0; i < n; ++i)
-          {
-            if (fe.system_to_component_index(i).first == dim)
-              {
-                augmented(i, i) = pressure_diagonal;
-                continue;
-              }
+          if (fe.system_to_component_index(i).first < dim)
             for (unsigned int j = 0; j < n; ++j)
               if (fe.system_to_component_index(j).first < dim)
                 augmented(i, j) = K(i, j);
-          }
+        for (unsigned int a = 0; a < p.size(); ++a)
+          for (unsigned int b = 0; b < p.size(); ++b)
+            augmented(p[a], p[b]) = mass(a, b) / schur_modulus;
       }
+
       /// Adds the cell's tangent @p K and residual @p R of the mixed (u, q)
       /// form with @p law at the quadrature points of @p fv, where u has
       /// the gradients @p grad_u and q the values @p q; c(F, q) = J - 1 -
       /// q/kappa gives the pressure block -M_p/kappa. Returns the integral
-      /// of c over the cell and the cell's volume.
-      std::pair<double, double>
+      /// of c over the cell.
+      double
       add_cell_terms(const FEValues<dim>               &fv,
                      const MaterialLaw<dim>            &law,
                      const std::vector<Tensor<2, dim>> &grad_u,
@@ -115,7 +138,7 @@ namespace rollnip
         std::vector<Tensor<2, dim>>      grad_phi(n), dP(n);
         std::vector<double>              psi(n);
         const double                     compliance = law.pressure_compliance();
-        double                           cell_constraint = 0, cell_volume = 0;
+        double                           cell_constraint = 0;
         for (unsigned int k = 0; k < grad_u.size(); ++k)
           {
             const Tensor<2, dim> F   = unit_symmetric_tensor<dim>() + grad_u[k];
@@ -124,7 +147,6 @@ namespace rollnip
             const double         g   = law.constraint(F) - compliance * q[k];
             const double         dx  = fv.JxW(k);
             cell_constraint += g * dx;
-            cell_volume += dx;
             for (unsigned int i = 0; i < n; ++i)
               {
                 grad_phi[i] = fv[u_ex].gradient(i, k);
@@ -143,7 +165,7 @@ namespace rollnip
                     dx;
               }
           }
-        return {cell_constraint, cell_volume};
+        return cell_constraint;
       }
     } // namespace
 
@@ -167,12 +189,6 @@ namespace rollnip
         , augmentation(iterative ? 10. * law->shear_modulus() : 0.)
         , core(three_d.core_deflection)
     {
-      // The block preconditioner's Schur diagonal and rigid-body modes are
-      // those of Q1-P0 (vertex dofs, one pressure per cell).
-      AssertThrow(!iterative || degree == 1,
-                  ExcMessage("Three d: Linear solver/Method = gmres-amg "
-                             "needs Discretization/Element = Q1-P0; use "
-                             "the direct method with Q2-P1"));
       AssertThrow(parameters.material.theory == Parameters::Theory::nonlinear,
                   ExcMessage("Three d: Material/Theory must be nonlinear"));
       for (unsigned int j = 0; j < parameters.material.n_layers(); ++j)
@@ -225,7 +241,9 @@ namespace rollnip
           block_amg = std::make_unique<SliceBlockSolver>(
             parameters.linear_solver.iterative_tolerance,
             parameters.linear_solver.max_iterations);
-          block_amg->setup(dof_handler, law->shear_modulus() + augmentation);
+          block_amg->setup(*mapping,
+                           dof_handler,
+                           law->shear_modulus() + augmentation);
         }
     }
 
@@ -296,7 +314,7 @@ namespace rollnip
             R = 0;
             fv[u_ex].get_function_gradients(solution, grad_u);
             fv[q_ex].get_function_values(solution, q);
-            const auto [cell_constraint, cell_volume] = add_cell_terms(
+            const double cell_constraint = add_cell_terms(
               fv, *layer_laws[cell->material_id()], grad_u, q, K, R);
             constraint_error += std::abs(cell_constraint);
             cell->get_dof_indices(dofs);
@@ -307,18 +325,21 @@ namespace rollnip
             homogeneous_constraints.distribute_local_to_global(R_u,
                                                                dofs,
                                                                condensed);
+            FullMatrix<double> mass, inverse_mass;
             if (iterative)
-              augment_cell_system(fe, cell_volume, augmentation, K, R);
+              {
+                mass = cell_pressure_mass(fv);
+                inverse_mass.reinit(mass.m(), mass.n());
+                inverse_mass.invert(mass);
+                augment_cell_system(fe, inverse_mass, augmentation, K, R);
+              }
             R *= -1.;
             constraints.distribute_local_to_global(
               K, R, dofs, system_matrix, system_rhs, true);
             if (iterative)
               {
-                make_augmented_cell_matrix(fe,
-                                           K,
-                                           cell_volume / (law->shear_modulus() +
-                                                          augmentation),
-                                           K_amg);
+                make_augmented_cell_matrix(
+                  fe, K, mass, law->shear_modulus() + augmentation, K_amg);
                 constraints.distribute_local_to_global(K_amg,
                                                        dofs,
                                                        preconditioner_matrix);

@@ -6,20 +6,22 @@
 # stops at 1e-9 of the right-hand side, Newton at a relative residual of
 # 1e-10), on NP processes (default 1), and each run prints its solver.
 #
-# Usage: bash solver_equivalence_3d.sh ROLLNIP MPIEXEC NUMDIFF PRM [NP]
+# Usage: bash solver_equivalence_3d.sh ROLLNIP MPIEXEC NUMDIFF PRM [NP [ELEMENT]]
 #
 # Runs PRM at mesh level LEVEL (default 1) with two cells through the
-# thickness, once per method.
+# thickness, once per method; ELEMENT (Q1-P0 or Q2-P1), if given, is
+# Discretization/Element of both.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-[ $# -eq 4 ] || [ $# -eq 5 ] ||
-  fail "usage: solver_equivalence_3d.sh ROLLNIP MPIEXEC NUMDIFF PRM [NP]"
+[ $# -ge 4 ] && [ $# -le 6 ] ||
+  fail "usage: solver_equivalence_3d.sh ROLLNIP MPIEXEC NUMDIFF PRM [NP [ELEMENT]]"
 rollnip="$(realpath "$1")"
 mpiexec="$2"
 numdiff="$3"
 scene="$(realpath "$4")"
 np="${5:-1}"
+element="${6:-}"
 level="${LEVEL:-1}"
 [[ "$np" =~ ^[1-9][0-9]*$ ]] || fail "NP must be a positive integer, got '$np'"
 require_executable rollnip "$rollnip"
@@ -43,6 +45,9 @@ for method in direct gmres-amg; do
   printf '\nsubsection Mesh\n  set Global refinements = %s\nend\n' "$level" >> "$method.prm"
   printf 'subsection Three d\n  set Layers = 2\nend\n' >> "$method.prm"
   printf 'subsection Linear solver\n  set Method = %s\nend\n' "$method" >> "$method.prm"
+  if [ -n "$element" ]; then
+    printf 'subsection Discretization\n  set Element = %s\nend\n' "$element" >> "$method.prm"
+  fi
   printf 'subsection Output\n  set Directory = out_%s\n  set Write VTU = false\nend\n' \
     "$method" >> "$method.prm"
   rc=0
@@ -50,7 +55,7 @@ for method in direct gmres-amg; do
   [ "$rc" -eq 0 ] || { cat "$method.log"; fail "the $method run failed (exit code $rc)"; }
   grep -q "linear solver: $method" "$method.log" ||
     fail "$method.log does not print 'linear solver: $method'"
-  pass "$method run on $np process(es) finished and printed its solver"
+  pass "$method run (${element:-element of PRM}) on $np process(es) finished and printed its solver"
 done
 
 # The iterative run did iterate; the direct one did not.

@@ -2,6 +2,9 @@
 #define rollnip_three_d_slice_block_solver_h
 
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -14,17 +17,26 @@ namespace rollnip
 {
   namespace three_d
   {
+    /// The cell's pressure mass matrix M_K = int psi_a psi_b dX over the
+    /// pressure dofs of @p fv's cell, in the order of the cell's pressure
+    /// dofs: |cell| for P0, 4x4 for P1. @p fv carries values and JxW.
+    FullMatrix<double>
+    cell_pressure_mass(const FEValues<dim> &fv);
+
     /**
      * GMRES with a block lower-triangular preconditioner for the Newton
-     * system K = [A B^T; B 0] of the 3D body (Q1-P0), the 3D variant of
-     * BlockAMGSolver (solvers/block_amg.h) for an augmented Lagrangian
+     * system K = [A B^T; B 0] of the 3D body (Q1-P0 or Q2-P1), the 3D variant
+     * of BlockAMGSolver (solvers/block_amg.h) for an augmented Lagrangian
      * system (A = A_0 + gamma B^T M_p^-1 B, SliceBody::assemble()):
      *   A^-1 ~ one AMG V-cycle (Trilinos ML) on [A 0; 0 M_p/G'], with the
-     *          six rigid-body modes of the displacement as ML's near-null
-     *          space (with the three constant modes alone GMRES needs about
-     *          1.5 times the iterations on the slice),
-     *   S^-1 ~ G' M_p^-1, G' = G + gamma, diagonal for the P0 pressure:
-     *          G' / |cell|.
+     *          six rigid-body modes of the displacement at every support
+     *          point (vertices for Q1; also edge, face and cell nodes for
+     *          Q2) as ML's near-null space (with the three constant modes
+     *          alone GMRES needs about 1.5 times the iterations on the
+     *          slice),
+     *   S^-1 ~ G' M_p^-1, G' = G + gamma, one block per cell for the
+     *          discontinuous pressure: G' / |cell| for P0, G' M_K^-1 with
+     *          the 4x4 mass matrix of the cell for P1.
      */
     class SliceBlockSolver
     {
@@ -33,10 +45,14 @@ namespace rollnip
       SliceBlockSolver(const double       tolerance,
                        const unsigned int max_iterations);
 
-      /// The rigid-body modes and the Schur diagonal of @p dof_handler's
-      /// mesh (FE_Q(1)^3 x FE_DGP(0)); @p schur_modulus G' [MPa].
+      /// The rigid-body modes and the Schur blocks of @p dof_handler's
+      /// mesh (FE_Q(k)^3 x a discontinuous pressure), the support points
+      /// and the cells' pressure mass through @p mapping (QGauss(k + 1));
+      /// @p schur_modulus G' [MPa].
       void
-      setup(const DoFHandler<dim> &dof_handler, const double schur_modulus);
+      setup(const Mapping<dim>    &mapping,
+            const DoFHandler<dim> &dof_handler,
+            const double           schur_modulus);
 
       /// Builds the AMG hierarchy of @p augmented; K is used by solve().
       /// A new AMG hierarchy for @p augmented, or the last one kept when
@@ -69,6 +85,18 @@ namespace rollnip
       void
       build_hierarchy();
 
+      /// The rigid-body modes and the displacement mask at every locally
+      /// owned displacement dof, at its support point on @p mapping.
+      void
+      collect_rigid_modes(const Mapping<dim>    &mapping,
+                          const DoFHandler<dim> &dof_handler);
+
+      /// G' M_K^-1 and the local pressure rows of every owned cell.
+      void
+      collect_schur_blocks(const Mapping<dim>    &mapping,
+                           const DoFHandler<dim> &dof_handler,
+                           const double           schur_modulus);
+
       const double                          tolerance;
       const unsigned int                    max_iterations;
       const TrilinosWrappers::SparseMatrix *matrix           = nullptr;
@@ -79,8 +107,13 @@ namespace rollnip
       std::vector<double> rigid_modes;
       /// The displacement constant modes (for ML's defaults).
       std::vector<std::vector<bool>> constant_modes;
-      /// G' / |cell| at the pressure dofs, 0 at the displacement dofs.
-      TrilinosWrappers::MPI::Vector schur_diagonal;
+      /// The pressure dofs of the locally owned cells as indices into the
+      /// locally owned rows, n_pressure per cell, cell after cell.
+      std::vector<unsigned int> schur_rows;
+      /// G' M_K^-1 of those cells, n_pressure^2 per cell (row major).
+      std::vector<double> schur_blocks;
+      /// Pressure dofs per cell: 1 (P0) or 4 (P1).
+      unsigned int n_pressure = 0;
       /// 1 at the displacement dofs, 0 at the pressure dofs.
       TrilinosWrappers::MPI::Vector         displacement_mask;
       mutable TrilinosWrappers::MPI::Vector tmp;
