@@ -121,6 +121,54 @@ namespace rollnip
                 << " mm at the middle of the face, v(z) in " << path
                 << std::endl;
     }
+    /// The solved nips of a sweep over Contact/Values, their wall times
+    /// [s] and, with a free far face, the free end of each.
+    struct SliceSweep
+    {
+      std::vector<three_d::SliceNip> nips;
+      std::vector<double>            seconds;
+      std::vector<three_d::FreeEnd>  free_ends;
+    };
+
+    /// Solves every value of Contact/Values in turn (u0, or P under load
+    /// control from the previous nip), printing each nip on @p root and
+    /// writing its VTU when asked.
+    SliceSweep
+    solve_sweep(three_d::SliceBody              &body,
+                const Parameters::AllParameters &parameters,
+                const Parameters::ThreeD        &three_d,
+                const bool                       root)
+    {
+      const bool load_driven =
+        parameters.contact.mode == Parameters::ContactMode::load;
+      SliceSweep sweep;
+      auto      &nips = sweep.nips;
+      for (const double value : parameters.contact.values)
+        {
+          Timer timer;
+          nips.push_back(
+            load_driven
+              ? three_d::solve_for_load(body,
+                                        value,
+                                        nips.empty() ? three_d::SliceNip()
+                                                     : nips.back(),
+                                        three_d.approach_step,
+                                        parameters.contact.control_tolerance,
+                                        parameters.contact.max_iterations)
+              : body.solve(value));
+          sweep.seconds.push_back(timer.wall_time());
+          if (root)
+            print_nip(nips.back(), sweep.seconds.back());
+          if (!three_d.fix_far_face && !three_d.elastic_core)
+            sweep.free_ends.push_back(
+              three_d::evaluate_free_end(body, nips.back().u0));
+          if (parameters.output.write_vtu)
+            body.write_vtu(parameters.output.directory,
+                           "slice_3d",
+                           nips.size() - 1);
+        }
+      return sweep;
+    }
   } // namespace
 
   int
@@ -128,10 +176,9 @@ namespace rollnip
               const Parameters::ThreeD        &three_d,
               MPI_Comm                         communicator)
   {
-    using Mode             = Parameters::ContactMode;
-    const Mode mode        = parameters.contact.mode;
-    const bool load_driven = mode == Mode::load;
-    AssertThrow(mode == Mode::indentation || load_driven,
+    using Mode      = Parameters::ContactMode;
+    const Mode mode = parameters.contact.mode;
+    AssertThrow(mode == Mode::indentation || mode == Mode::load,
                 ExcMessage("Three d: Contact/Mode must be indentation (the "
                            "approaches u0 are Contact/Values) or load (the "
                            "line loads P)"));
@@ -151,31 +198,8 @@ namespace rollnip
                   << "  linear solver: " << body.linear_solver_name()
                   << std::endl;
       }
-    std::vector<three_d::SliceNip> nips;
-    std::vector<double>            seconds;
-    std::vector<three_d::FreeEnd>  free_ends; // Far face = free only
-    for (const double value : parameters.contact.values)
-      {
-        Timer timer;
-        nips.push_back(
-          load_driven
-            ? three_d::solve_for_load(body,
-                                      value,
-                                      nips.empty() ? three_d::SliceNip()
-                                                   : nips.back(),
-                                      three_d.approach_step,
-                                      parameters.contact.control_tolerance,
-                                      parameters.contact.max_iterations)
-            : body.solve(value));
-        const double u0 = nips.back().u0;
-        seconds.push_back(timer.wall_time());
-        if (root)
-          print_nip(nips.back(), seconds.back());
-        if (!three_d.fix_far_face && !three_d.elastic_core)
-          free_ends.push_back(three_d::evaluate_free_end(body, u0));
-        if (parameters.output.write_vtu)
-          body.write_vtu(directory, "slice_3d", nips.size() - 1);
-      }
+    const auto [nips, seconds, free_ends] =
+      solve_sweep(body, parameters, three_d, root);
     const auto                  profile     = body.line_load_profile();
     const three_d::ContactPatch patch       = body.contact_patch();
     const auto                  bending     = three_d.elastic_core
