@@ -21,14 +21,15 @@
 #include <rollnip/rolling/steady_rolling.h>
 #include <rollnip/rolling/steady_rolling_sweep.h>
 
+#include "steady_rolling_scene.h"
 #include "test_tools.h"
 
 using namespace rollnip;
 
 namespace
 {
-  constexpr double R0 = 60.7, R1 = 47.2, Rbar = 76.2; // mm
-  constexpr double g = 1., tau = 1e-4;                // one-term SLS
+  constexpr double R0 = testing::rolling_R0, Rbar = testing::rolling_Rbar;
+  constexpr double g = testing::rolling_g, tau = testing::rolling_tau;
 
   /// The periodic branch for S = cos(theta) against its exact steady
   /// solution; the largest error over the amplitude.
@@ -63,21 +64,6 @@ namespace
     return error / 0.7;
   }
 
-  SteadyRollingScene
-  scene(const Parameters::Material &material, const double theta0)
-  {
-    SteadyRollingScene s;
-    s.material               = material;
-    s.viscous                = {{{g}, {tau}}};
-    s.indenter_radius        = Rbar;
-    s.layout.layer_radii     = {R1, R0};
-    s.layout.fine_half_angle = 2.5 * theta0;
-    s.layout.fine_cells      = 100;
-    s.layout.radial_cells    = 16;
-    s.layout.radial_grading  = 0.3;
-    return s;
-  }
-
   /// b / tau [mm/s] of the nip of half-angle @p theta0.
   double
   b_over_tau(const double theta0)
@@ -108,7 +94,7 @@ namespace
       "subsection Material\n set Theory = linear\nend\nsubsection Contact\n"
       " set Mode = nip angle\n set Values = 3\n set Indenter radius = "
       "76.2\nend\n");
-    SteadyRolling slow(scene(linear.material, theta0));
+    SteadyRolling slow(testing::steady_rolling_scene(linear.material, theta0));
     const double  V = 0.003 * b_over_tau(theta0) * 1e-3;
     checker.check(slow.solve_elastic(symmetric_nip(linear, theta0).indentation,
                                      1) &&
@@ -157,7 +143,7 @@ main(int argc, char **argv)
     "Indenter radius = 76.2\nend\n");
   const ContactResult nip = symmetric_nip(parameters, theta0);
   checker.check(nip.converged, "symmetric nip converged");
-  const auto    s = scene(parameters.material, theta0);
+  const auto    s = testing::steady_rolling_scene(parameters.material, theta0);
   SteadyRolling rolling(s);
   checker.check(rolling.solve_elastic(nip.indentation, 2),
                 "whole-circle elastic nip converged");

@@ -22,30 +22,16 @@
 #include <rollnip/rolling/steady_rolling_sweep.h>
 #include <rollnip/rolling/steady_rolling_temperature.h>
 
+#include "steady_rolling_scene.h"
 #include "test_tools.h"
 
 using namespace rollnip;
 
 namespace
 {
-  constexpr double R0 = 60.7, R1 = 47.2, Rbar = 76.2; // mm
-  constexpr double g = 1., tau = 1e-4;                // one-term SLS
+  constexpr double R0 = testing::rolling_R0, R1 = testing::rolling_R1;
+  constexpr double g = testing::rolling_g, tau = testing::rolling_tau;
   constexpr double k = 0.25, h = 30, T_air = 20, T_core = 35;
-
-  SteadyRollingScene
-  scene(const Parameters::Material &material, const double theta0)
-  {
-    SteadyRollingScene s;
-    s.material               = material;
-    s.viscous                = {{{g}, {tau}}};
-    s.indenter_radius        = Rbar;
-    s.layout.layer_radii     = {R1, R0};
-    s.layout.fine_half_angle = 2.5 * theta0;
-    s.layout.fine_cells      = 100;
-    s.layout.radial_cells    = 16;
-    s.layout.radial_grading  = 0.3;
-    return s;
-  }
 
   /// The thermal data, the core held at @p core [degC] or insulated.
   Parameters::Rolling
@@ -213,7 +199,8 @@ main(int argc, char **argv)
   const ContactResult nip = contact.solve(theta0);
   checker.check(nip.converged, "symmetric nip converged");
 
-  SteadyRolling rolling(scene(parameters.material, theta0));
+  SteadyRolling rolling(
+    testing::steady_rolling_scene(parameters.material, theta0));
   checker.check(rolling.solve_elastic(nip.indentation, 2),
                 "whole-circle elastic nip converged");
   const auto               circles = rolling.circles();

@@ -1,0 +1,40 @@
+#ifndef rollnip_tests_steady_rolling_scene_h
+#define rollnip_tests_steady_rolling_scene_h
+
+#include <rollnip/rolling/steady_rolling.h>
+
+/**
+ * The whole-circle scene the full steady-rolling tests share: the run-30
+ * cover, one Prony term, the mesh whose energy balance closes to 1 %.
+ */
+namespace rollnip
+{
+  namespace testing
+  {
+    constexpr double rolling_R0 = 60.7, rolling_R1 = 47.2; // cover radii [mm]
+    constexpr double rolling_Rbar = 76.2; // rigid indenter radius [mm]
+    constexpr double rolling_g = 1., rolling_tau = 1e-4; // one-term SLS
+
+    /// The cover of @p material between R1 and R0 against the rigid
+    /// indenter, the Prony term (g, tau [s]), 100 fine cells over 2.5 times
+    /// the nip half-angle @p theta0 [rad] each side of the nip, 16 radial
+    /// cells graded 0.3.
+    inline SteadyRollingScene
+    steady_rolling_scene(const Parameters::Material &material,
+                         const double                theta0)
+    {
+      SteadyRollingScene s;
+      s.material               = material;
+      s.viscous                = {{{rolling_g}, {rolling_tau}}};
+      s.indenter_radius        = rolling_Rbar;
+      s.layout.layer_radii     = {rolling_R1, rolling_R0};
+      s.layout.fine_half_angle = 2.5 * theta0;
+      s.layout.fine_cells      = 100;
+      s.layout.radial_cells    = 16;
+      s.layout.radial_grading  = 0.3;
+      return s;
+    }
+  } // namespace testing
+} // namespace rollnip
+
+#endif
