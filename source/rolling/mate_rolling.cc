@@ -63,15 +63,9 @@ namespace rollnip
            "surface speed (doc/rolling.md)\n"
         << "mate_rolling_resistance_N_per_mm = " << m.rolling_resistance << '\n'
         << "mate_drive_power_W_per_m = " << m.power << '\n'
-        << "mate_V_tau_over_b = " << m.speed_over_nip << '\n'
-        << "mate_cover_bond_temperature_degC = " << m.bond_temperature << '\n'
-        << "mate_cover_surface_temperature_degC = " << m.surface_temperature
-        << '\n'
-        << "mate_cover_max_temperature_degC = " << m.max_temperature << '\n'
-        << "mate_heat_generated_W_per_m = " << m.heat_generated << '\n'
-        << "mate_heat_to_air_W_per_m = " << m.heat_to_air << '\n'
-        << "mate_heat_to_core_W_per_m = " << m.heat_to_core << '\n'
-        << "pair_rolling_resistance_N_per_mm = "
+        << "mate_V_tau_over_b = " << m.speed_over_nip << '\n';
+    write_heat_lines(out, "mate_", m);
+    out << "pair_rolling_resistance_N_per_mm = "
         << n.rolling_resistance + m.rolling_resistance << '\n'
         << "pair_drive_power_W_per_m = " << n.power + m.power << '\n';
     return out.str();

@@ -227,6 +227,23 @@ namespace rollnip
     return n;
   }
 
+  void
+  write_heat_lines(std::ostream           &out,
+                   const std::string      &prefix,
+                   const CoverHeatBalance &heat)
+  {
+    out << prefix << "cover_bond_temperature_degC = " << heat.bond_temperature
+        << '\n'
+        << prefix
+        << "cover_surface_temperature_degC = " << heat.surface_temperature
+        << '\n'
+        << prefix << "cover_max_temperature_degC = " << heat.max_temperature
+        << '\n'
+        << prefix << "heat_generated_W_per_m = " << heat.heat_generated << '\n'
+        << prefix << "heat_to_air_W_per_m = " << heat.heat_to_air << '\n'
+        << prefix << "heat_to_core_W_per_m = " << heat.heat_to_core << '\n';
+  }
+
   std::string
   rolling_lines(const RollingNumbers &n)
   {
@@ -238,14 +255,9 @@ namespace rollnip
         << "rolling_drive_power_W_per_m = " << n.power << '\n'
         << "rolling_heat_W_per_m = " << n.power << '\n'
         << "rolling_linear_estimate_N_per_mm = " << n.linear_estimate << '\n'
-        << "rolling_V_tau_over_b = " << n.speed_over_nip << '\n'
-        << "cover_bond_temperature_degC = " << n.bond_temperature << '\n'
-        << "cover_surface_temperature_degC = " << n.surface_temperature << '\n'
-        << "cover_max_temperature_degC = " << n.max_temperature << '\n'
-        << "heat_generated_W_per_m = " << n.heat_generated << '\n'
-        << "heat_to_air_W_per_m = " << n.heat_to_air << '\n'
-        << "heat_to_core_W_per_m = " << n.heat_to_core << '\n'
-        << "rolling_loss_wall_time_s = " << n.loss_seconds << '\n'
+        << "rolling_V_tau_over_b = " << n.speed_over_nip << '\n';
+    write_heat_lines(out, "", n);
+    out << "rolling_loss_wall_time_s = " << n.loss_seconds << '\n'
         << "rolling_temperature_wall_time_s = " << n.heat_seconds << '\n';
     return out.str();
   }

@@ -51,18 +51,14 @@ namespace rollnip
         << "# full steady rolling at the nip's approach (doc/rolling.md, "
            "section 7)\n";
     if (f.available)
-      out << "full_rolling_speed_m_per_s = " << f.speed << '\n'
-          << "full_rolling_resistance_N_per_mm = " << f.rolling_resistance
-          << '\n'
-          << "full_rolling_drive_power_W_per_m = " << f.power << '\n'
-          << "full_rolling_load_N_per_mm = " << f.load << '\n'
-          << "full_cover_bond_temperature_degC = " << f.bond_temperature << '\n'
-          << "full_cover_surface_temperature_degC = " << f.surface_temperature
-          << '\n'
-          << "full_cover_max_temperature_degC = " << f.max_temperature << '\n'
-          << "full_heat_generated_W_per_m = " << f.heat_generated << '\n'
-          << "full_heat_to_air_W_per_m = " << f.heat_to_air << '\n'
-          << "full_heat_to_core_W_per_m = " << f.heat_to_core << '\n';
+      {
+        out << "full_rolling_speed_m_per_s = " << f.speed << '\n'
+            << "full_rolling_resistance_N_per_mm = " << f.rolling_resistance
+            << '\n'
+            << "full_rolling_drive_power_W_per_m = " << f.power << '\n'
+            << "full_rolling_load_N_per_mm = " << f.load << '\n';
+        write_heat_lines(out, "full_", f);
+      }
     out << "full_rolling_hottest_speed_m_per_s = " << f.hottest_speed << '\n'
         << "full_rolling_hottest_max_temperature_degC = "
         << f.hottest_temperature << '\n';

@@ -69,10 +69,17 @@ csv_value()
   echo "$value"
 }
 
+# An awk function number(x): x is a finite decimal number. mawk takes
+# "nan" for a number whose comparisons all hold, so without it a check
+# would pass on a nan (or on an empty value against 0).
+awk_number='function number(x) {
+  return x ~ /^[ \t]*[-+]?([0-9]+[.]?[0-9]*|[.][0-9]+)([eE][-+]?[0-9]+)?[ \t]*$/ }'
+
 # check_abs_below NAME VALUE LIMIT: |VALUE| < LIMIT.
 check_abs_below()
 {
-  if awk -v v="$2" -v l="$3" 'BEGIN { exit !((v < 0 ? -v : v) < l) }'; then
+  if awk -v v="$2" -v l="$3" "$awk_number"'
+       BEGIN { exit !(number(v) && (v < 0 ? -v : v) < l) }'; then
     pass "|$1| = |$2| < $3"
   else
     fail "|$1| = |$2| is not below $3"
@@ -82,19 +89,22 @@ check_abs_below()
 # check_close NAME VALUE EXPECTED ABS_TOL: |VALUE - EXPECTED| <= ABS_TOL.
 check_close()
 {
-  if awk -v v="$2" -v e="$3" -v t="$4" \
-       'BEGIN { d = v - e; exit !((d < 0 ? -d : d) <= t) }'; then
+  if awk -v v="$2" -v e="$3" -v t="$4" "$awk_number"'
+       BEGIN { d = v - e; exit !(number(v) && number(e) && (d < 0 ? -d : d) <= t) }'; then
     pass "$1 = $2, expected $3 within $4"
   else
     fail "$1 = $2, expected $3 within $4"
   fi
 }
 
-# check_rel_close NAME VALUE EXPECTED REL_TOL: |VALUE/EXPECTED - 1| <= REL_TOL.
+# check_rel_close NAME VALUE EXPECTED REL_TOL: |VALUE/EXPECTED - 1| <= REL_TOL
+# (VALUE = 0 exactly when EXPECTED is 0).
 check_rel_close()
 {
-  if awk -v v="$2" -v e="$3" -v t="$4" \
-       'BEGIN { d = v / e - 1; exit !((d < 0 ? -d : d) <= t) }'; then
+  if awk -v v="$2" -v e="$3" -v t="$4" "$awk_number"'
+       BEGIN { if (!number(v) || !number(e)) exit 1
+               if (e == 0) exit !(v == 0)
+               d = v / e - 1; exit !((d < 0 ? -d : d) <= t) }'; then
     pass "$1 = $2, expected $3 within relative $4"
   else
     fail "$1 = $2, expected $3 within relative $4"
@@ -104,7 +114,8 @@ check_rel_close()
 # check_less NAME VALUE LIMIT: VALUE < LIMIT.
 check_less()
 {
-  if awk -v v="$2" -v l="$3" 'BEGIN { exit !(v < l) }'; then
+  if awk -v v="$2" -v l="$3" "$awk_number"'
+       BEGIN { exit !(number(v) && number(l) && v < l) }'; then
     pass "$1 = $2 < $3"
   else
     fail "$1 = $2 is not below $3"

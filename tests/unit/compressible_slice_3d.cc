@@ -35,18 +35,6 @@ namespace
            " set Control tolerance = 1e-9\nend\n";
   }
 
-  /// The 2D P(u0) [N/mm], Q2-P1 at level 3.
-  double
-  plane_strain_load(const double nu, const double u0)
-  {
-    const auto p = testing::parameters_from_string(
-      scene(nu) + "subsection Mesh\n set Global refinements = 3\nend\n"
-                  "subsection Discretization\n set Element = Q2-P1\nend\n");
-    RollProblem problem(p, MPI_COMM_WORLD);
-    problem.setup();
-    InverseContact contact(problem, p);
-    return solve_controlled_nip(contact, p, u0).nip_load;
-  }
 } // namespace
 
 int
@@ -55,10 +43,10 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   testing::Checker                 check;
   const double                     nu = 0.45, u0 = 1.;
-  const double                     P_2d = plane_strain_load(nu, u0);
-  const auto parameters = testing::parameters_from_string(scene(nu));
-  double     error[2];
-  double     P_slice = 0;
+  const double P_2d       = testing::plane_strain_reference_load(scene(nu), u0);
+  const auto   parameters = testing::parameters_from_string(scene(nu));
+  double       error[2];
+  double       P_slice = 0;
   for (const unsigned int level : {1u, 2u})
     {
       three_d::SliceBody      body(parameters,

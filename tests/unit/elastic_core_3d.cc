@@ -24,15 +24,7 @@ using namespace rollnip;
 
 namespace
 {
-  const std::string scene =
-    "subsection Geometry\n set Inner radius = 47.2\n set Outer radius = "
-    "60.7\n set Sector angle = 180\nend\n"
-    "subsection Mesh\n set Radial cells = 6\n set Circumferential cells = "
-    "24\n set Circumferential grading = 10\nend\n"
-    "subsection Material\n set C1 = 0.25\n set C2 = 0.25\nend\n"
-    "subsection Boundary conditions\n set Far edge (id 3) = symmetry\nend\n"
-    "subsection Contact\n set Mode = indentation\n set Values = 1\n"
-    " set Indenter radius = 76.2\nend\n";
+  const std::string scene = testing::half_roll_core_scene(24);
 
   constexpr double L = 250, bearing = 300, Ri = 25, R1 = 47.2, E = 2100,
                    nu = 0.3;

@@ -33,18 +33,6 @@ namespace
     " set Indenter radius = 76.2\n set Conformity tolerance = 1e-8\n"
     " set Control tolerance = 1e-9\nend\n";
 
-  /// The 2D P(u0) [N/mm], Q2-P1 at level 3.
-  double
-  plane_strain_load(const double u0)
-  {
-    const auto p = testing::parameters_from_string(
-      scene + "subsection Mesh\n set Global refinements = 3\nend\n"
-              "subsection Discretization\n set Element = Q2-P1\nend\n");
-    RollProblem problem(p, MPI_COMM_WORLD);
-    problem.setup();
-    InverseContact contact(problem, p);
-    return solve_controlled_nip(contact, p, u0).nip_load;
-  }
 } // namespace
 
 int
@@ -52,10 +40,10 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   testing::Checker                 check;
-  const double                     u0   = 1.;
-  const double                     P_2d = plane_strain_load(u0);
-  const auto parameters = testing::parameters_from_string(scene);
-  double     error[2];
+  const double                     u0 = 1.;
+  const double P_2d       = testing::plane_strain_reference_load(scene, u0);
+  const auto   parameters = testing::parameters_from_string(scene);
+  double       error[2];
   for (const unsigned int level : {1u, 2u})
     {
       three_d::SliceBody      body(parameters,

@@ -15,7 +15,6 @@
 // - F_r rises and then falls with speed, with its peak near V tau ~ b;
 //   the pressure skews to the inlet (theta < 0).
 
-#include <rollnip/contact/inverse_contact.h>
 #include <rollnip/rolling/first_order_loss.h>
 #include <rollnip/rolling/periodic_relaxation.h>
 #include <rollnip/rolling/steady_rolling.h>
@@ -71,17 +70,6 @@ namespace
     return R0 * theta0 / tau;
   }
 
-  /// The symmetric (half-model) solver's nip of @p parameters at @p theta0.
-  ContactResult
-  symmetric_nip(const Parameters::AllParameters &parameters,
-                const double                     theta0)
-  {
-    RollProblem problem(parameters, MPI_COMM_WORLD);
-    problem.setup();
-    InverseContact contact(problem, parameters);
-    return contact.solve(theta0);
-  }
-
   /// In linear theory at small speed F_r is the closed form
   /// g tau V P / R_eff (doc/rolling.md, R.6).
   void
@@ -96,8 +84,8 @@ namespace
       "76.2\nend\n");
     SteadyRolling slow(testing::steady_rolling_scene(linear.material, theta0));
     const double  V = 0.003 * b_over_tau(theta0) * 1e-3;
-    checker.check(slow.solve_elastic(symmetric_nip(linear, theta0).indentation,
-                                     1) &&
+    checker.check(slow.solve_elastic(
+                    testing::symmetric_nip(linear, theta0).indentation, 1) &&
                     slow.solve_speed(V),
                   "linear theory: converged at V tau / b = 0.003");
     const auto   r      = slow.result();
@@ -141,7 +129,7 @@ main(int argc, char **argv)
     "60.7\nend\nsubsection Mesh\n set Global refinements = 3\nend\n"
     "subsection Contact\n set Mode = nip angle\n set Values = 3\n set "
     "Indenter radius = 76.2\nend\n");
-  const ContactResult nip = symmetric_nip(parameters, theta0);
+  const ContactResult nip = testing::symmetric_nip(parameters, theta0);
   checker.check(nip.converged, "symmetric nip converged");
   const auto    s = testing::steady_rolling_scene(parameters.material, theta0);
   SteadyRolling rolling(s);

@@ -8,10 +8,10 @@
 //   that layer's Prony terms itself), for the whole cover and for each
 //   layer's branches alone; to first order the two layers' losses add.
 
-#include <rollnip/contact/inverse_contact.h>
 #include <rollnip/rolling/steady_rolling.h>
 #include <rollnip/rolling/steady_rolling_sweep.h>
 
+#include "steady_rolling_scene.h"
 #include "test_tools.h"
 
 using namespace rollnip;
@@ -78,10 +78,7 @@ main(int argc, char **argv)
                           "0.25\n set C2 = 0.06, 0.05\n set Layer thicknesses = 4.5, 9\nend\n"
                           "subsection Contact\n set Mode = nip angle\n set Values = 3\n set "
                           "Indenter radius = 76.2\nend\n");
-  RollProblem problem(parameters, MPI_COMM_WORLD);
-  problem.setup();
-  InverseContact      contact(problem, parameters);
-  const ContactResult nip = contact.solve(theta0);
+  const ContactResult nip = testing::symmetric_nip(parameters, theta0);
   checker.check(nip.converged, "symmetric layered nip converged");
 
   const Parameters::ViscousLayer none{{0.}, {1e-4}};

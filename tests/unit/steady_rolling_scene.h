@@ -1,11 +1,14 @@
 #ifndef rollnip_tests_steady_rolling_scene_h
 #define rollnip_tests_steady_rolling_scene_h
 
+#include <rollnip/contact/inverse_contact.h>
+#include <rollnip/problem.h>
 #include <rollnip/rolling/steady_rolling.h>
 
 /**
  * The whole-circle scene the full steady-rolling tests share: the run-30
- * cover, one Prony term, the mesh whose energy balance closes to 1 %.
+ * cover, one Prony term, the mesh whose energy balance closes to 1 %;
+ * and the symmetric (half-model) nip they start from.
  */
 namespace rollnip
 {
@@ -33,6 +36,18 @@ namespace rollnip
       s.layout.radial_cells    = 16;
       s.layout.radial_grading  = 0.3;
       return s;
+    }
+
+    /// The symmetric (half-model) solver's nip of @p parameters at
+    /// @p theta0 [rad].
+    inline ContactResult
+    symmetric_nip(const Parameters::AllParameters &parameters,
+                  const double                     theta0)
+    {
+      RollProblem problem(parameters, MPI_COMM_WORLD);
+      problem.setup();
+      InverseContact contact(problem, parameters);
+      return contact.solve(theta0);
     }
   } // namespace testing
 } // namespace rollnip

@@ -17,7 +17,6 @@
 //   polygon is slightly shorter), so the full and first-order rises are
 //   in the ratio of their F_r.
 
-#include <rollnip/contact/inverse_contact.h>
 #include <rollnip/rolling/steady_rolling.h>
 #include <rollnip/rolling/steady_rolling_sweep.h>
 #include <rollnip/rolling/steady_rolling_temperature.h>
@@ -193,10 +192,7 @@ main(int argc, char **argv)
                           "60.7\nend\nsubsection Mesh\n set Global refinements = 2\nend\n"
                           "subsection Contact\n set Mode = nip angle\n set Values = 3\n set "
                           "Indenter radius = 76.2\nend\n");
-  RollProblem problem(parameters, MPI_COMM_WORLD);
-  problem.setup();
-  InverseContact      contact(problem, parameters);
-  const ContactResult nip = contact.solve(theta0);
+  const ContactResult nip = testing::symmetric_nip(parameters, theta0);
   checker.check(nip.converged, "symmetric nip converged");
 
   SteadyRolling rolling(

@@ -1,9 +1,14 @@
 #ifndef rollnip_tests_three_d_test_tools_h
 #define rollnip_tests_three_d_test_tools_h
 
+#include <rollnip/contact/inverse_contact.h>
+#include <rollnip/contact/nip_control.h>
+#include <rollnip/problem.h>
 #include <rollnip/three_d/three_d_parameters.h>
 
 #include <string>
+
+#include "test_tools.h"
 
 /**
  * The scenes the 3D tests share, so that each test states only what it
@@ -51,6 +56,40 @@ namespace rollnip
              "subsection Boundary conditions\n"
              " set Far edge (id 3) = free\nend\n"
              "subsection Contact\n set Mode = indentation\n set Values = 0.2\n"
+             " set Indenter radius = 76.2\nend\n";
+    }
+
+    /// The plane-strain truth of the slice tests: P(u0) [N/mm] of the 2D
+    /// @p scene (indentation control), Q2-P1 at level 3.
+    inline double
+    plane_strain_reference_load(const std::string &scene, const double u0)
+    {
+      const auto p = parameters_from_string(
+        scene + "subsection Mesh\n set Global refinements = 3\nend\n"
+                "subsection Discretization\n set Element = Q2-P1\nend\n");
+      RollProblem problem(p, MPI_COMM_WORLD);
+      problem.setup();
+      InverseContact contact(problem, p);
+      return solve_controlled_nip(contact, p, u0).nip_load;
+    }
+
+    /// The half roll of the elastic-core tests: the run-30 cover (R1 =
+    /// 47.2 mm, R2 = 60.7 mm, C1 = C2 = 0.25 MPa) over 180 deg on 6 radial
+    /// and @p circumferential_cells cells, pressed 1 mm by a 76.2 mm
+    /// cylinder.
+    inline std::string
+    half_roll_core_scene(const unsigned int circumferential_cells)
+    {
+      return "subsection Geometry\n set Inner radius = 47.2\n set Outer "
+             "radius = 60.7\n set Sector angle = 180\nend\n"
+             "subsection Mesh\n set Radial cells = 6\n set Circumferential "
+             "cells = " +
+             std::to_string(circumferential_cells) +
+             "\n set Circumferential grading = 10\nend\n"
+             "subsection Material\n set C1 = 0.25\n set C2 = 0.25\nend\n"
+             "subsection Boundary conditions\n set Far edge (id 3) = "
+             "symmetry\nend\n"
+             "subsection Contact\n set Mode = indentation\n set Values = 1\n"
              " set Indenter radius = 76.2\nend\n";
     }
   } // namespace testing
