@@ -7,7 +7,7 @@
 #include <rollnip/boundary_ids.h>
 #include <rollnip/cost_estimate.h>
 #include <rollnip/geometry/cover_layers.h>
-#include <rollnip/geometry/gmsh_dimension.h>
+#include <rollnip/geometry/gmsh_scan.h>
 #include <rollnip/geometry/roll_mesh.h>
 
 #include <cmath>

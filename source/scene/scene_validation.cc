@@ -4,7 +4,7 @@
 #include <rollnip/contact/nip_estimates.h>
 #include <rollnip/cost_estimate.h>
 #include <rollnip/engineering_inputs.h>
-#include <rollnip/geometry/gmsh_dimension.h>
+#include <rollnip/geometry/gmsh_scan.h>
 #include <rollnip/geometry/roll_mesh.h>
 #include <rollnip/material/compressibility.h>
 #include <rollnip/parameter_entries.h>

@@ -1,6 +1,7 @@
 #include <deal.II/grid/grid_in.h>
 
 #include <rollnip/geometry/cover_layers.h>
+#include <rollnip/geometry/gmsh_scan.h>
 #include <rollnip/parameter_entries.h>
 #include <rollnip/three_d/axial_grading.h>
 #include <rollnip/three_d/drawn_mesh.h>
@@ -44,6 +45,13 @@ namespace rollnip
         std::ifstream in(file);
         AssertThrow(in.good(),
                     ExcMessage("Mesh/Mesh file: cannot open '" + file + "'"));
+        const std::string hexahedra_only =
+          "; the 3D body needs hexahedra only (in gmsh: extrude a "
+          "recombined surface with Layers and Recombine)";
+        AssertThrow(gmsh_volume_cells_are_hexahedra(file),
+                    ExcMessage(origin +
+                               " contains tetrahedra, prisms or pyramids" +
+                               hexahedra_only));
         GridIn<dim> grid_in;
         grid_in.attach_triangulation(coarse);
         try
@@ -58,11 +66,8 @@ namespace rollnip
           }
         AssertThrow(coarse.n_active_cells() > 0 &&
                       coarse.all_reference_cells_are_hyper_cube(),
-                    ExcMessage(origin +
-                               " contains tetrahedra, prisms or pyramids (or "
-                               "no cells); the 3D body needs hexahedra only "
-                               "(in gmsh: extrude a recombined surface with "
-                               "Layers and Recombine)"));
+                    ExcMessage(origin + " contains no hexahedra" +
+                               hexahedra_only));
         for (const auto &cell : coarse.active_cell_iterators())
           AssertThrow(cell->measure() > 0,
                       ExcMessage(origin + ": the cell at " +
@@ -175,19 +180,18 @@ namespace rollnip
                                       parameters, length, b, face->vertex(v)));
             }
         for (unsigned int b = 0; b < worst.size(); ++b)
-          {
-            AssertThrow(worst[b] >= 0,
-                        ExcMessage(
-                          origin + ": the mesh has no boundary with id " +
-                          std::to_string(b) + " (" + id_names[b] + ")"));
-            AssertThrow(worst[b] < 1e-6 * parameters.geometry.outer_radius,
-                        ExcMessage(origin + ": faces with boundary id " +
-                                   std::to_string(b) + " do not lie on the " +
-                                   id_names[b] + " (off by " +
-                                   Parameters::number(worst[b]) +
-                                   " mm); faces in no physical surface get "
-                                   "id 0"));
-          }
+          AssertThrow(worst[b] >= 0,
+                      ExcMessage(origin +
+                                 ": the mesh has no boundary with id " +
+                                 std::to_string(b) + " (" + id_names[b] + ")"));
+        for (unsigned int b = 0; b < worst.size(); ++b)
+          AssertThrow(worst[b] < 1e-6 * parameters.geometry.outer_radius,
+                      ExcMessage(origin + ": faces with boundary id " +
+                                 std::to_string(b) + " do not lie on the " +
+                                 id_names[b] + " (off by " +
+                                 Parameters::number(worst[b]) +
+                                 " mm); faces in no physical surface get "
+                                 "id 0"));
       }
 
       /// No cell of a layered cover straddles an interface.

@@ -4,7 +4,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <rollnip/geometry/cover_layers.h>
-#include <rollnip/geometry/gmsh_dimension.h>
+#include <rollnip/geometry/gmsh_scan.h>
 #include <rollnip/geometry/roll_mesh.h>
 #include <rollnip/three_d/axial_grading.h>
 #include <rollnip/three_d/drawn_mesh.h>

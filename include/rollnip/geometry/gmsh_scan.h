@@ -1,6 +1,7 @@
-#ifndef rollnip_geometry_gmsh_dimension_h
-#define rollnip_geometry_gmsh_dimension_h
+#ifndef rollnip_geometry_gmsh_scan_h
+#define rollnip_geometry_gmsh_scan_h
 
+#include <set>
 #include <string>
 
 namespace rollnip
@@ -15,6 +16,17 @@ namespace rollnip
    */
   unsigned int
   gmsh_mesh_dimension(const std::string &file);
+
+  /// The gmsh element types (the numbers of the gmsh manual) in the ASCII
+  /// gmsh file @p file; empty when it cannot be scanned.
+  std::set<int>
+  gmsh_element_types(const std::string &file);
+
+  /// Whether every volume element of @p file is a hexahedron (8, 20 or
+  /// 27 nodes); the 3D body refuses tetrahedra, prisms and pyramids by
+  /// name before GridIn reads them.
+  bool
+  gmsh_volume_cells_are_hexahedra(const std::string &file);
 } // namespace rollnip
 
 #endif

@@ -1,7 +1,8 @@
-#include <rollnip/geometry/gmsh_dimension.h>
+#include <rollnip/geometry/gmsh_scan.h>
 
 #include <algorithm>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 namespace rollnip
@@ -42,34 +43,31 @@ namespace rollnip
     }
 
     /// Format 2: one element a line, "number type ...".
-    unsigned int
-    elements_dimension_v2(std::istream &in)
+    void
+    element_types_v2(std::istream &in, std::set<int> &types)
     {
       long n = 0;
       in >> n;
       std::string line;
       std::getline(in, line);
-      unsigned int dimension = 0;
       for (long k = 0; k < n && std::getline(in, line); ++k)
         {
           std::istringstream fields(line);
           long               number = 0;
           int                type   = 0;
           if (fields >> number >> type)
-            dimension = std::max(dimension, element_dimension(type));
+            types.insert(type);
         }
-      return dimension;
     }
 
     /// Format 4: blocks headed "entityDim entityTag type count".
-    unsigned int
-    elements_dimension_v4(std::istream &in)
+    void
+    element_types_v4(std::istream &in, std::set<int> &types)
     {
       long blocks = 0, n = 0, min_tag = 0, max_tag = 0;
       in >> blocks >> n >> min_tag >> max_tag;
       std::string line;
       std::getline(in, line);
-      unsigned int dimension = 0;
       for (long b = 0; b < blocks && std::getline(in, line); ++b)
         {
           std::istringstream header(line);
@@ -77,35 +75,57 @@ namespace rollnip
           long               tag = 0, count = 0;
           int                type = 0;
           if (!(header >> entity_dimension >> tag >> type >> count))
-            return 0;
-          dimension = std::max(dimension, element_dimension(type));
+            return;
+          types.insert(type);
           for (long k = 0; k < count && std::getline(in, line); ++k)
             ;
         }
-      return dimension;
     }
   } // namespace
 
-  unsigned int
-  gmsh_mesh_dimension(const std::string &file)
+  std::set<int>
+  gmsh_element_types(const std::string &file)
   {
     std::ifstream in(file);
     std::string   line;
     double        version = 0;
     int           binary  = 1;
+    std::set<int> types;
     while (std::getline(in, line))
       {
         if (line.rfind("$MeshFormat", 0) == 0)
           {
             in >> version >> binary;
             if (binary != 0)
-              return 0;
+              break;
           }
         else if (line.rfind("$Elements", 0) == 0)
-          return version >= 4   ? elements_dimension_v4(in)
-                 : version >= 2 ? elements_dimension_v2(in)
-                                : 0;
+          {
+            if (version >= 4)
+              element_types_v4(in, types);
+            else if (version >= 2)
+              element_types_v2(in, types);
+            break;
+          }
       }
-    return 0;
+    return types;
+  }
+
+  unsigned int
+  gmsh_mesh_dimension(const std::string &file)
+  {
+    unsigned int dimension = 0;
+    for (const int type : gmsh_element_types(file))
+      dimension = std::max(dimension, element_dimension(type));
+    return dimension;
+  }
+
+  bool
+  gmsh_volume_cells_are_hexahedra(const std::string &file)
+  {
+    for (const int type : gmsh_element_types(file))
+      if (element_dimension(type) == 3 && type != 5 && type != 12 && type != 17)
+        return false;
+    return true;
   }
 } // namespace rollnip
