@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <iostream>
 #include <set>
 
 namespace rollnip
@@ -232,6 +233,26 @@ namespace rollnip
       check_boundary_ids(parameters, coarse, length, origin);
       check_layer_interfaces(parameters, coarse, origin);
       return planes;
+    }
+
+    bool
+    is_drawn_slice(const Parameters::AllParameters &parameters)
+    {
+      return parameters.mesh.source == Parameters::MeshSource::gmsh &&
+             gmsh_mesh_dimension(parameters.mesh.mesh_file) == 3;
+    }
+
+    int
+    validate_drawn_slice(const Parameters::AllParameters &parameters,
+                         const double                     length,
+                         const std::string               &file,
+                         const bool                       root)
+    {
+      Triangulation<dim> coarse;
+      read_drawn_slice(parameters, length, coarse);
+      if (root)
+        std::cout << "rollnip: '" << file << "' is valid" << std::endl;
+      return 0;
     }
   } // namespace three_d
 } // namespace rollnip

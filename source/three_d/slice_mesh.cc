@@ -4,7 +4,6 @@
 #include <deal.II/grid/tria.h>
 
 #include <rollnip/geometry/cover_layers.h>
-#include <rollnip/geometry/gmsh_scan.h>
 #include <rollnip/geometry/roll_mesh.h>
 #include <rollnip/three_d/axial_grading.h>
 #include <rollnip/three_d/drawn_mesh.h>
@@ -132,9 +131,8 @@ namespace rollnip
       Triangulation<dim>  coarse;
       std::vector<double> planes =
         axial_planes(thickness, layers, axial_grading);
-      const bool gmsh = parameters.mesh.source == Parameters::MeshSource::gmsh;
-      const bool drawn =
-        gmsh && gmsh_mesh_dimension(parameters.mesh.mesh_file) == 3;
+      const bool gmsh  = parameters.mesh.source == Parameters::MeshSource::gmsh;
+      const bool drawn = is_drawn_slice(parameters);
       if (drawn)
         planes = read_drawn_slice(parameters, thickness, coarse);
       else if (gmsh)

@@ -5,6 +5,7 @@
 
 #include <rollnip/parameters.h>
 
+#include <string>
 #include <vector>
 
 namespace rollnip
@@ -30,6 +31,19 @@ namespace rollnip
     read_drawn_slice(const Parameters::AllParameters &parameters,
                      const double                     length,
                      Triangulation<3>                &coarse);
+
+    /// Whether Mesh/Mesh file is a 3D mesh the 3D body reads as drawn
+    /// (Mesh/Source = gmsh and a volume mesh in the file).
+    bool
+    is_drawn_slice(const Parameters::AllParameters &parameters);
+
+    /// --validate on a 3D scene with a drawn mesh: read_drawn_slice()'s
+    /// checks, then "'@p file' is valid" on the root process (@p root).
+    int
+    validate_drawn_slice(const Parameters::AllParameters &parameters,
+                         const double                     length,
+                         const std::string               &file,
+                         const bool                       root);
   } // namespace three_d
 } // namespace rollnip
 
