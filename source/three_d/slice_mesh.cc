@@ -10,6 +10,7 @@
 #include <rollnip/three_d/slice_mesh.h>
 
 #include <cmath>
+#include <iostream>
 
 namespace rollnip
 {
@@ -27,6 +28,22 @@ namespace rollnip
 
     namespace
     {
+      /// A drawn mesh brings its own layers: says so (on the root process)
+      /// when Three d/Layers or Axial grading were set.
+      void
+      warn_ignored_layers(const unsigned int layers,
+                          const double       axial_grading,
+                          const std::string &file,
+                          const MPI_Comm     communicator)
+      {
+        if ((layers != 1 || axial_grading != 1.) &&
+            Utilities::MPI::this_mpi_process(communicator) == 0)
+          std::cerr << "rollnip: warning: Three d/Layers and Three d/Axial "
+                       "grading are ignored: the layers along the axis are "
+                       "those of the 3D mesh in Mesh/Mesh file '"
+                    << file << "'" << std::endl;
+      }
+
       /// @p planes with the middle of every gap inserted.
       std::vector<double>
       halved_planes(const std::vector<double> &planes)
@@ -134,7 +151,13 @@ namespace rollnip
       const bool gmsh  = parameters.mesh.source == Parameters::MeshSource::gmsh;
       const bool drawn = is_drawn_slice(parameters);
       if (drawn)
-        planes = read_drawn_slice(parameters, thickness, coarse);
+        {
+          planes = read_drawn_slice(parameters, thickness, coarse);
+          warn_ignored_layers(layers,
+                              axial_grading,
+                              parameters.mesh.mesh_file,
+                              triangulation.get_communicator());
+        }
       else if (gmsh)
         make_gmsh_slice(parameters, level, planes, coarse);
       else

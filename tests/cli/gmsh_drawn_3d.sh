@@ -20,7 +20,8 @@
 # drawn mesh is refined in 3D on the cylindrical manifold (r, theta and z
 # halved), the extruded one in the polar chart with twice the layers: the
 # same mesh again. The drawn free end on 2 MPI processes must repeat the
-# serial run to 1e-8.
+# serial run to 1e-8, and the slice with Q2-P1 the extruded one. A drawn
+# run warns that Three d/Layers is ignored.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
@@ -103,6 +104,26 @@ agree()
 run slice_extruded 0 section.msh 2
 run slice_drawn 0 drawn_1.msh 2
 agree slice_extruded slice_drawn "slice, drawn against extruded" n_cells n_dofs
+# Layers = 2 means nothing to a drawn mesh: said once, in a warning.
+warning="Three d/Layers and Three d/Axial grading are ignored"
+[ "$(grep -c "^rollnip: warning: $warning.*drawn_1.msh" slice_drawn.err)" -eq 1 ] ||
+  fail "the drawn run does not warn once that Three d/Layers is ignored"
+! grep -q "$warning" slice_extruded.err ||
+  fail "the extruded run warns that Three d/Layers is ignored"
+pass "the drawn run (only) warns that Three d/Layers is ignored"
+
+# Q2-P1 (MappingQ(2) on the cylindrical manifold, the mid-layer planes of
+# the line load) at u0 = 1 mm.
+for kind in extruded drawn; do
+  mesh_file=section.msh
+  [ $kind = drawn ] && mesh_file=drawn_1.msh
+  write slice_q2_$kind 0 $mesh_file 2
+  printf 'subsection Discretization\n  set Element = Q2-P1\nend\n' >> slice_q2_$kind.prm
+  printf 'subsection Contact\n  set Values = 1\nend\n' >> slice_q2_$kind.prm
+  run_named slice_q2_$kind
+done
+agree slice_q2_extruded slice_q2_drawn "slice, Q2-P1, drawn against extruded" \
+  n_dofs
 
 free_end_keys=(n_cells n_dofs end_deficit_length_l_mm end_bulge_uz_mm
   bond_shear_peak_MPa bond_corner_sigma_rr_mean_h_MPa
