@@ -7,6 +7,7 @@
 #include <rollnip/boundary_ids.h>
 #include <rollnip/cost_estimate.h>
 #include <rollnip/geometry/cover_layers.h>
+#include <rollnip/geometry/gmsh_scan.h>
 #include <rollnip/geometry/roll_mesh.h>
 
 #include <cmath>
@@ -109,6 +110,11 @@ namespace rollnip
       AssertThrow(in.good(),
                   ExcMessage(prefix + "Mesh/Mesh file: cannot open '" + file +
                              "'"));
+      AssertThrow(gmsh_mesh_dimension(file) != 3,
+                  ExcMessage(prefix + "Mesh/Mesh file: '" + file +
+                             "' holds a 3D mesh; a 2D run needs a "
+                             "quadrilateral cross-section (Three d/Enabled = "
+                             "true reads a 3D hexahedral mesh as drawn)"));
       GridIn<dim> grid_in;
       grid_in.attach_triangulation(coarse);
       try

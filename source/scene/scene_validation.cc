@@ -4,6 +4,7 @@
 #include <rollnip/contact/nip_estimates.h>
 #include <rollnip/cost_estimate.h>
 #include <rollnip/engineering_inputs.h>
+#include <rollnip/geometry/gmsh_scan.h>
 #include <rollnip/geometry/roll_mesh.h>
 #include <rollnip/material/compressibility.h>
 #include <rollnip/parameter_entries.h>
@@ -342,6 +343,11 @@ namespace rollnip
     validate_mesh_entries(roll, prefix);
     validate_reach(roll, prefix, nips);
     warn_unit(roll.geometry, prefix);
+    // A 3D mesh is the 3D body's (three_d/drawn_mesh.h checks it there);
+    // a 2D run refuses it where it reads the mesh.
+    if (roll.mesh.source == Parameters::MeshSource::gmsh &&
+        gmsh_mesh_dimension(roll.mesh.mesh_file) == 3)
+      return 0;
     if (roll.mesh.source == Parameters::MeshSource::gmsh)
       return check_gmsh_mesh(roll, prefix);
     return double(roll.mesh.radial_cells) * roll.mesh.circumferential_cells;

@@ -13,6 +13,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <rollnip/material/law_factory.h>
+#include <rollnip/three_d/axial_grading.h>
 #include <rollnip/three_d/core_tube.h>
 #include <rollnip/three_d/slice_body.h>
 
@@ -198,14 +199,17 @@ namespace rollnip
           check_elastic_core(parameters, three_d);
           layer_laws.emplace_back(make_core_law(three_d));
           make_core_tube_mesh(parameters, three_d, level, triangulation);
+          layer_planes = axial_planes(three_d.slice_thickness,
+                                      three_d.layers,
+                                      three_d.axial_grading);
         }
       else
-        make_slice_mesh(parameters,
-                        level,
-                        three_d.slice_thickness,
-                        three_d.layers,
-                        triangulation,
-                        three_d.axial_grading);
+        layer_planes = make_slice_mesh(parameters,
+                                       level,
+                                       three_d.slice_thickness,
+                                       three_d.layers,
+                                       triangulation,
+                                       three_d.axial_grading);
       // c of the active-set rule, a pressure per mm of gap of the order of
       // the cover's stiffness G / h; any c > 0 gives the same converged set.
       active_set_scale =

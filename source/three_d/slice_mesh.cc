@@ -6,9 +6,11 @@
 #include <rollnip/geometry/cover_layers.h>
 #include <rollnip/geometry/roll_mesh.h>
 #include <rollnip/three_d/axial_grading.h>
+#include <rollnip/three_d/drawn_mesh.h>
 #include <rollnip/three_d/slice_mesh.h>
 
 #include <cmath>
+#include <iostream>
 
 namespace rollnip
 {
@@ -26,6 +28,34 @@ namespace rollnip
 
     namespace
     {
+      /// A drawn mesh brings its own layers: says so (on the root process)
+      /// when Three d/Layers or Axial grading were set.
+      void
+      warn_ignored_layers(const unsigned int layers,
+                          const double       axial_grading,
+                          const std::string &file,
+                          const MPI_Comm     communicator)
+      {
+        if ((layers != 1 || axial_grading != 1.) &&
+            Utilities::MPI::this_mpi_process(communicator) == 0)
+          std::cerr << "rollnip: warning: Three d/Layers and Three d/Axial "
+                       "grading are ignored: the layers along the axis are "
+                       "those of the 3D mesh in Mesh/Mesh file '"
+                    << file << "'" << std::endl;
+      }
+
+      /// @p planes with the middle of every gap inserted.
+      std::vector<double>
+      halved_planes(const std::vector<double> &planes)
+      {
+        std::vector<double> result = {planes.front()};
+        for (unsigned int j = 1; j < planes.size(); ++j)
+          {
+            result.push_back((planes[j - 1] + planes[j]) / 2.);
+            result.push_back(planes[j]);
+          }
+        return result;
+      }
 
       /// Every cell's material id: the cover layer (0 on the core) its
       /// centre's distance from the axis lies in. radial_steps() puts every
@@ -107,7 +137,7 @@ namespace rollnip
       }
     } // namespace
 
-    void
+    std::vector<double>
     make_slice_mesh(const Parameters::AllParameters           &parameters,
                     const unsigned int                         level,
                     const double                               thickness,
@@ -115,12 +145,21 @@ namespace rollnip
                     parallel::distributed::Triangulation<dim> &triangulation,
                     const double                               axial_grading)
     {
-      Triangulation<dim> coarse;
-      if (parameters.mesh.source == Parameters::MeshSource::gmsh)
-        make_gmsh_slice(parameters,
-                        level,
-                        axial_planes(thickness, layers, axial_grading),
-                        coarse);
+      Triangulation<dim>  coarse;
+      std::vector<double> planes =
+        axial_planes(thickness, layers, axial_grading);
+      const bool gmsh  = parameters.mesh.source == Parameters::MeshSource::gmsh;
+      const bool drawn = is_drawn_slice(parameters);
+      if (drawn)
+        {
+          planes = read_drawn_slice(parameters, thickness, coarse);
+          warn_ignored_layers(layers,
+                              axial_grading,
+                              parameters.mesh.mesh_file,
+                              triangulation.get_communicator());
+        }
+      else if (gmsh)
+        make_gmsh_slice(parameters, level, planes, coarse);
       else
         make_builtin_slice(parameters,
                            level,
@@ -134,6 +173,15 @@ namespace rollnip
       axis[2] = 1.;
       triangulation.set_manifold(0,
                                  CylindricalManifold<dim>(axis, Point<dim>()));
+      if (drawn)
+        {
+          // A drawn body is refined as drawn: every cell halves in r, theta
+          // and z, so the layers along the axis halve too.
+          triangulation.refine_global(level);
+          for (unsigned int k = 0; k < level; ++k)
+            planes = halved_planes(planes);
+        }
+      return planes;
     }
   } // namespace three_d
 } // namespace rollnip

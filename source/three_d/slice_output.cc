@@ -14,9 +14,7 @@ namespace rollnip
     std::vector<double>
     SliceBody::node_planes() const
     {
-      const std::vector<double> z = axial_planes(three_d.slice_thickness,
-                                                 three_d.layers,
-                                                 three_d.axial_grading);
+      const std::vector<double> &z = layer_planes;
       if (degree == 1)
         return z;
       std::vector<double> planes = {z.front()};
@@ -33,10 +31,8 @@ namespace rollnip
     {
       // The row sums of the 1D mass matrix along z: a plane's share of
       // the face, so that sum q_j w_j is the total force.
-      const std::vector<double> z = axial_planes(three_d.slice_thickness,
-                                                 three_d.layers,
-                                                 three_d.axial_grading);
-      std::vector<double>       widths(node_planes().size(), 0.);
+      const std::vector<double> &z = layer_planes;
+      std::vector<double>        widths(node_planes().size(), 0.);
       for (unsigned int j = 0; j + 1 < z.size(); ++j)
         {
           const double h = z[j + 1] - z[j];

@@ -61,7 +61,8 @@ namespace rollnip
                          Patterns::Bool(),
                          "Run the 3D body instead of the 2D cross-section: "
                          "the builtin or gmsh cross-section of Geometry and "
-                         "Mesh extruded along the roll axis, pressed by the "
+                         "Mesh extruded along the roll axis (or a 3D "
+                         "hexahedral gmsh mesh as drawn), pressed by the "
                          "indenter of Contact at the approaches u0 of "
                          "Contact/Values (Mode = indentation), Q1-P0 or "
                          "Q2-P1 as Discretization/Element (Q2-P1 with the "

@@ -247,6 +247,9 @@ namespace rollnip
       const Parameters::AllParameters           parameters;
       const Parameters::ThreeD                  three_d;
       parallel::distributed::Triangulation<dim> triangulation;
+      /// The z of the planes between the layers of cells [mm], 0 to
+      /// Slice thickness: the extruded layers, or a drawn mesh's own.
+      std::vector<double> layer_planes;
       /// 1 (Q1-P0) or 2 (Q2-P1): Discretization/Element.
       const unsigned int degree;
       /// MappingQ(degree): the Q2 cells follow the cylindrical manifold.

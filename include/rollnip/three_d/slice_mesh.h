@@ -50,8 +50,14 @@ namespace rollnip
      * cells carry a cylindrical manifold about the roll axis (the z axis)
      * and, as material id, the cover layer they lie in (0 on the core,
      * geometry/cover_layers.h).
+     *
+     * A Mesh/Mesh file holding a 3D mesh is the body as drawn
+     * (drawn_mesh.h): its own layers replace @p layers and
+     * @p axial_grading, and it is refined @p level times in all three
+     * directions. Returns the z of the planes between the layers of cells
+     * [mm], 0 to @p thickness.
      */
-    void
+    std::vector<double>
     make_slice_mesh(const Parameters::AllParameters           &parameters,
                     const unsigned int                         level,
                     const double                               thickness,
