@@ -1,5 +1,4 @@
 #include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria.h>
@@ -115,19 +114,10 @@ namespace rollnip
                              "' holds a 3D mesh; a 2D run needs a "
                              "quadrilateral cross-section (Three d/Enabled = "
                              "true reads a 3D hexahedral mesh as drawn)"));
-      GridIn<dim> grid_in;
-      grid_in.attach_triangulation(coarse);
-      try
-        {
-          grid_in.read_msh(in);
-        }
-      catch (...)
-        {
-          AssertThrow(false,
-                      ExcMessage(
-                        prefix + "Mesh/Mesh file: '" + file +
-                        "' is not a readable gmsh quadrilateral mesh"));
-        }
+      read_gmsh_mesh(in,
+                     coarse,
+                     prefix + "Mesh/Mesh file: '" + file +
+                       "' is not a readable gmsh quadrilateral mesh");
       // Q1-P0 and the polar manifold need quadrilaterals; a triangle (or
       // mixed) mesh would crash the first face loop.
       AssertThrow(coarse.n_active_cells() > 0 &&

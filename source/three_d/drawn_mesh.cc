@@ -1,4 +1,3 @@
-#include <deal.II/grid/grid_in.h>
 
 #include <rollnip/geometry/cover_layers.h>
 #include <rollnip/geometry/gmsh_scan.h>
@@ -53,18 +52,9 @@ namespace rollnip
                     ExcMessage(origin +
                                " contains tetrahedra, prisms or pyramids" +
                                hexahedra_only));
-        GridIn<dim> grid_in;
-        grid_in.attach_triangulation(coarse);
-        try
-          {
-            grid_in.read_msh(in);
-          }
-        catch (...)
-          {
-            AssertThrow(false,
-                        ExcMessage(origin + " is not a readable gmsh mesh of "
-                                            "hexahedra"));
-          }
+        read_gmsh_mesh(in,
+                       coarse,
+                       origin + " is not a readable gmsh mesh of hexahedra");
         AssertThrow(coarse.n_active_cells() > 0 &&
                       coarse.all_reference_cells_are_hyper_cube(),
                     ExcMessage(origin + " contains no hexahedra" +

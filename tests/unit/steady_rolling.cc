@@ -76,12 +76,8 @@ namespace
   check_linear_theory(testing::Checker &checker, const double theta0)
   {
     // Linear theory at small speed: the closed form g tau V P / R_eff.
-    const auto linear = testing::parameters_from_string(
-      "subsection Geometry\n set Inner radius = 47.2\n set Outer radius = "
-      "60.7\nend\nsubsection Mesh\n set Global refinements = 2\nend\n"
-      "subsection Material\n set Theory = linear\nend\nsubsection Contact\n"
-      " set Mode = nip angle\n set Values = 3\n set Indenter radius = "
-      "76.2\nend\n");
+    const auto linear = testing::rolling_nip_parameters(
+      2, "subsection Material\n set Theory = linear\nend\n");
     SteadyRolling slow(testing::steady_rolling_scene(linear.material, theta0));
     const double  V = 0.003 * b_over_tau(theta0) * 1e-3;
     checker.check(slow.solve_elastic(
@@ -124,12 +120,8 @@ main(int argc, char **argv)
   // Finite strain: zero speed against the symmetric solver's nip at
   // theta0 = 3 deg (the same frictionless contact on the deformed
   // surface), then the continuation in speed.
-  const auto parameters = testing::parameters_from_string(
-    "subsection Geometry\n set Inner radius = 47.2\n set Outer radius = "
-    "60.7\nend\nsubsection Mesh\n set Global refinements = 3\nend\n"
-    "subsection Contact\n set Mode = nip angle\n set Values = 3\n set "
-    "Indenter radius = 76.2\nend\n");
-  const ContactResult nip = testing::symmetric_nip(parameters, theta0);
+  const auto          parameters = testing::rolling_nip_parameters(3);
+  const ContactResult nip        = testing::symmetric_nip(parameters, theta0);
   checker.check(nip.converged, "symmetric nip converged");
   const auto    s = testing::steady_rolling_scene(parameters.material, theta0);
   SteadyRolling rolling(s);

@@ -71,13 +71,10 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   testing::Checker                 checker;
   const double                     theta0     = 3 * numbers::PI / 180;
-  const auto                       parameters = testing::parameters_from_string(
-    "subsection Geometry\n set Inner radius = 47.2\n set Outer radius = "
-                          "60.7\nend\nsubsection Mesh\n set Global refinements = 3\nend\n"
-                          "subsection Material\n set Layer order = core first\n set C1 = 0.3, "
-                          "0.25\n set C2 = 0.06, 0.05\n set Layer thicknesses = 4.5, 9\nend\n"
-                          "subsection Contact\n set Mode = nip angle\n set Values = 3\n set "
-                          "Indenter radius = 76.2\nend\n");
+  const auto                       parameters = testing::rolling_nip_parameters(
+    3,
+    "subsection Material\n set Layer order = core first\n set C1 = 0.3, "
+                          "0.25\n set C2 = 0.06, 0.05\n set Layer thicknesses = 4.5, 9\nend\n");
   const ContactResult nip = testing::symmetric_nip(parameters, theta0);
   checker.check(nip.converged, "symmetric layered nip converged");
 

@@ -5,6 +5,10 @@
 #include <rollnip/problem.h>
 #include <rollnip/rolling/steady_rolling.h>
 
+#include <string>
+
+#include "test_tools.h"
+
 /**
  * The whole-circle scene the full steady-rolling tests share: the run-30
  * cover, one Prony term, the mesh whose energy balance closes to 1 %;
@@ -36,6 +40,22 @@ namespace rollnip
       s.layout.radial_cells    = 16;
       s.layout.radial_grading  = 0.3;
       return s;
+    }
+
+    /// The run-30 cover at mesh level @p level, with the cover material
+    /// of @p material (.prm lines; default: run 30's), against the rigid
+    /// indenter at the half nip angle 3 deg: the nip the rolling tests
+    /// start from.
+    inline Parameters::AllParameters
+    rolling_nip_parameters(const unsigned int level,
+                           const std::string &material = "")
+    {
+      return parameters_from_string(
+        "subsection Geometry\n set Inner radius = 47.2\n set Outer radius = "
+        "60.7\nend\nsubsection Mesh\n set Global refinements = " +
+        std::to_string(level) + "\nend\n" + material +
+        "subsection Contact\n set Mode = nip angle\n set Values = 3\n set "
+        "Indenter radius = 76.2\nend\n");
     }
 
     /// The symmetric (half-model) solver's nip of @p parameters at

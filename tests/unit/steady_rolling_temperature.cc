@@ -122,17 +122,6 @@ namespace
                     "air)");
   }
 
-  /// At small V tau / b: the rises of the temperatures that are not held
-  /// (over the air's, which they are without a source) in the ratio of
-  /// the full and first-order losses, and the heat balance.
-  void
-  check_low_speed(testing::Checker         &checker,
-                  SteadyRollingTemperature &heat,
-                  const SteadyRolling      &rolling,
-                  const RollingLoss        &first,
-                  const bool                insulated,
-                  const std::string        &at);
-
   /// Heat made = the full route's power, and = heat leaving.
   void
   check_balance(testing::Checker             &checker,
@@ -150,6 +139,9 @@ namespace
                     " + to core " + testing::num(T.to_core) + " (to 1e-6)");
   }
 
+  /// At small V tau / b: the rises of the temperatures that are not held
+  /// (over the air's, which they are without a source) in the ratio of
+  /// the full and first-order losses, and the heat balance.
   void
   check_low_speed(testing::Checker         &checker,
                   SteadyRollingTemperature &heat,
@@ -186,12 +178,8 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   testing::Checker                 checker;
-  const double                     theta0     = 3 * numbers::PI / 180;
-  const auto                       parameters = testing::parameters_from_string(
-    "subsection Geometry\n set Inner radius = 47.2\n set Outer radius = "
-                          "60.7\nend\nsubsection Mesh\n set Global refinements = 2\nend\n"
-                          "subsection Contact\n set Mode = nip angle\n set Values = 3\n set "
-                          "Indenter radius = 76.2\nend\n");
+  const double                     theta0 = 3 * numbers::PI / 180;
+  const auto          parameters          = testing::rolling_nip_parameters(2);
   const ContactResult nip = testing::symmetric_nip(parameters, theta0);
   checker.check(nip.converged, "symmetric nip converged");
 

@@ -1,6 +1,12 @@
 #ifndef rollnip_geometry_gmsh_scan_h
 #define rollnip_geometry_gmsh_scan_h
 
+#include <deal.II/base/exceptions.h>
+
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/tria.h>
+
+#include <istream>
 #include <set>
 #include <string>
 
@@ -27,6 +33,27 @@ namespace rollnip
   /// name before GridIn reads them.
   bool
   gmsh_volume_cells_are_hexahedra(const std::string &file);
+
+  /// The gmsh mesh in @p in read into @p coarse; a file GridIn cannot
+  /// read becomes the one-line error @p unreadable (GridIn's own message
+  /// names neither the file nor the parameter).
+  template <int dim>
+  void
+  read_gmsh_mesh(std::istream               &in,
+                 dealii::Triangulation<dim> &coarse,
+                 const std::string          &unreadable)
+  {
+    dealii::GridIn<dim> grid_in;
+    grid_in.attach_triangulation(coarse);
+    try
+      {
+        grid_in.read_msh(in);
+      }
+    catch (...)
+      {
+        AssertThrow(false, dealii::ExcMessage(unreadable));
+      }
+  }
 } // namespace rollnip
 
 #endif
