@@ -274,14 +274,15 @@ namespace rollnip
 
       // Linear solver/Method = gmres-amg (slice_linear_solve.cc).
       const bool iterative;
-      /// gamma of the augmented Lagrangian, 10 G [MPa]: the Newton system
-      /// is solved as [A + gamma B^T M_p^-1 B, B^T; B, 0] (the same du;
-      /// M_p block diagonal, one block per cell: |cell| for P0, 4x4 for
-      /// P1), whose Schur complement G M_p^-1 + gamma M_p^-1 approximates
-      /// well whatever the inf-sup constant of Q1-P0; 0 with the direct
-      /// solver.
-      const double augmentation;
-      /// [A 0; 0 M_p/G], the AMG's matrix, assembled beside K.
+      /// gamma of the augmented Lagrangian and G' of the Schur blocks by
+      /// the cells' material id (layer_laws, cell_augmentation()): the
+      /// Newton system is solved as [A + gamma B^T M_p^-1 B, B^T; B, 0]
+      /// (the same du; M_p block diagonal, one block per cell: |cell| for
+      /// P0, 4x4 for P1), whose Schur complement G M_p^-1 + gamma M_p^-1
+      /// approximates well whatever the inf-sup constant of Q1-P0; empty
+      /// with the direct solver.
+      std::vector<CellAugmentation> augmentation;
+      /// [A 0; 0 M_p/G'], the AMG's matrix, assembled beside K.
       TrilinosWrappers::SparseMatrix    preconditioner_matrix;
       std::unique_ptr<SliceBlockSolver> block_amg;
 
