@@ -34,7 +34,7 @@ namespace rollnip
 
     /**
      * The augmentation of the cells of @p law, from the cell's own moduli
-     * (a cover layer and a steel core differ by 1e5 in G):
+     * (a cover layer and a steel core differ by 8e4 in G):
      * - incompressible: gamma = 10 G, G' = G + gamma;
      * - compressible with kappa = 1 / pressure_compliance() <= 10 G (the
      *   steel core, nu = 0.3): gamma = kappa, which takes the cell's

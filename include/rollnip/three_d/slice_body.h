@@ -314,8 +314,8 @@ namespace rollnip
       vertex_areas() const;
 
       /// Every cover layer's law, by the cells' material id (0: on the
-      /// core); law above is the surface layer's, the scale of the contact
-      /// rule and of the iterative solver.
+      /// core), and with the elastic core the steel's after them; law
+      /// above is the surface layer's, the scale of the contact rule.
       std::vector<std::unique_ptr<const MaterialLaw<dim>>> layer_laws;
     };
   } // namespace three_d
