@@ -58,10 +58,21 @@ namespace rollnip
       return M;
     }
 
+    CellAugmentation
+    cell_augmentation(const MaterialLaw<dim> &law)
+    {
+      const double G     = law.shear_modulus();
+      const double c     = law.pressure_compliance(); // 1 / kappa
+      const double gamma = 10. * G;
+      if (c > 0 && c * gamma >= 1.)
+        return {1. / c, 1. / c};
+      return {gamma, (G + gamma) / (1. + G * c)};
+    }
+
     void
-    SliceBlockSolver::setup(const Mapping<dim>    &mapping,
-                            const DoFHandler<dim> &dof_handler,
-                            const double           schur_modulus)
+    SliceBlockSolver::setup(const Mapping<dim>        &mapping,
+                            const DoFHandler<dim>     &dof_handler,
+                            const std::vector<double> &schur_modulus)
     {
       fresh_iterations = last_iterations = 0;
       std::vector<bool> u_components(dim + 1, true);
@@ -109,9 +120,10 @@ namespace rollnip
     }
 
     void
-    SliceBlockSolver::collect_schur_blocks(const Mapping<dim>    &mapping,
-                                           const DoFHandler<dim> &dof_handler,
-                                           const double           schur_modulus)
+    SliceBlockSolver::collect_schur_blocks(
+      const Mapping<dim>        &mapping,
+      const DoFHandler<dim>     &dof_handler,
+      const std::vector<double> &schur_modulus)
     {
       // The element's quadrature, so that M_K is the mass matrix of the
       // augmentation (SliceBody::assemble()) and exact for P1 x P1 on
@@ -138,9 +150,10 @@ namespace rollnip
                 schur_rows.push_back(owned.index_within_set(dofs[i]));
             FullMatrix<double> inverse = cell_pressure_mass(fv);
             inverse.gauss_jordan();
+            const double modulus = schur_modulus.at(cell->material_id());
             for (unsigned int a = 0; a < n_pressure; ++a)
               for (unsigned int b = 0; b < n_pressure; ++b)
-                schur_blocks.push_back(schur_modulus * inverse(a, b));
+                schur_blocks.push_back(modulus * inverse(a, b));
           }
     }
 

@@ -187,7 +187,6 @@ namespace rollnip
         , indenter(make_counter_surface(parameters.geometry.outer_radius,
                                         parameters.contact.indenter_radius))
         , iterative(parameters.linear_solver.method == "gmres-amg")
-        , augmentation(iterative ? 10. * law->shear_modulus() : 0.)
         , core(three_d.core_deflection)
     {
       AssertThrow(parameters.material.theory == Parameters::Theory::nonlinear,
@@ -210,6 +209,9 @@ namespace rollnip
                                        three_d.layers,
                                        triangulation,
                                        three_d.axial_grading);
+      if (iterative)
+        for (const auto &cell_law : layer_laws)
+          augmentation.push_back(cell_augmentation(*cell_law));
       // c of the active-set rule, a pressure per mm of gap of the order of
       // the cover's stiffness G / h; any c > 0 gives the same converged set.
       active_set_scale =
@@ -245,9 +247,10 @@ namespace rollnip
           block_amg = std::make_unique<SliceBlockSolver>(
             parameters.linear_solver.iterative_tolerance,
             parameters.linear_solver.max_iterations);
-          block_amg->setup(*mapping,
-                           dof_handler,
-                           law->shear_modulus() + augmentation);
+          std::vector<double> schur_modulus;
+          for (const CellAugmentation &a : augmentation)
+            schur_modulus.push_back(a.schur_modulus);
+          block_amg->setup(*mapping, dof_handler, schur_modulus);
         }
     }
 
@@ -329,13 +332,16 @@ namespace rollnip
             homogeneous_constraints.distribute_local_to_global(R_u,
                                                                dofs,
                                                                condensed);
-            FullMatrix<double> mass, inverse_mass;
+            FullMatrix<double>     mass, inverse_mass;
+            const CellAugmentation cell_aug =
+              iterative ? augmentation[cell->material_id()]
+                        : CellAugmentation{0., 0.};
             if (iterative)
               {
                 mass = cell_pressure_mass(fv);
                 inverse_mass.reinit(mass.m(), mass.n());
                 inverse_mass.invert(mass);
-                augment_cell_system(fe, inverse_mass, augmentation, K, R);
+                augment_cell_system(fe, inverse_mass, cell_aug.gamma, K, R);
               }
             R *= -1.;
             constraints.distribute_local_to_global(
@@ -343,7 +349,7 @@ namespace rollnip
             if (iterative)
               {
                 make_augmented_cell_matrix(
-                  fe, K, mass, law->shear_modulus() + augmentation, K_amg);
+                  fe, K, mass, cell_aug.schur_modulus, K_amg);
                 constraints.distribute_local_to_global(K_amg,
                                                        dofs,
                                                        preconditioner_matrix);

@@ -16,8 +16,10 @@ namespace rollnip
       if (iterative)
         name << "gmres-amg (GMRES to a relative residual of "
              << settings.iterative_tolerance
-             << "; augmented Lagrangian, gamma = " << augmentation
-             << " MPa; AMG with the rigid-body modes on the displacements)";
+             << "; augmented Lagrangian, gamma = "
+             << augmentation[parameters.material.n_layers() - 1].gamma
+             << " MPa in the surface layer, each cell's from its own law;"
+             << " AMG with the rigid-body modes on the displacements)";
       else
         name << "direct (" << settings.direct_solver << ')';
       return name.str();

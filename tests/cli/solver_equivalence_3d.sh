@@ -8,9 +8,11 @@
 #
 # Usage: bash solver_equivalence_3d.sh ROLLNIP MPIEXEC NUMDIFF PRM [NP [ELEMENT]]
 #
-# Runs PRM at mesh level LEVEL (default 1) with two cells through the
-# thickness, once per method; ELEMENT (Q1-P0 or Q2-P1), if given, is
-# Discretization/Element of both.
+# Runs PRM at mesh level LEVEL (default 1) with LAYERS cells through the
+# thickness (default 2), once per method; ELEMENT
+# (Q1-P0 or Q2-P1), if given, is Discretization/Element of both. With an
+# elastic core the core's deflection and bending stress along the axis
+# are compared too.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
@@ -23,6 +25,7 @@ scene="$(realpath "$4")"
 np="${5:-1}"
 element="${6:-}"
 level="${LEVEL:-1}"
+layers="${LAYERS:-2}"
 [[ "$np" =~ ^[1-9][0-9]*$ ]] || fail "NP must be a positive integer, got '$np'"
 require_executable rollnip "$rollnip"
 require_executable "numdiff (needed to compare the results)" "$numdiff"
@@ -43,7 +46,7 @@ fi
 for method in direct gmres-amg; do
   cp "$scene" "$method.prm"
   printf '\nsubsection Mesh\n  set Global refinements = %s\nend\n' "$level" >> "$method.prm"
-  printf 'subsection Three d\n  set Layers = 2\nend\n' >> "$method.prm"
+  printf 'subsection Three d\n  set Layers = %s\nend\n' "$layers" >> "$method.prm"
   printf 'subsection Linear solver\n  set Method = %s\nend\n' "$method" >> "$method.prm"
   if [ -n "$element" ]; then
     printf 'subsection Discretization\n  set Element = %s\nend\n' "$element" >> "$method.prm"
@@ -69,7 +72,11 @@ for dir in out_direct out_gmres-amg; do
   grep -v -E '^(wall_time_s|mpi_processes|linear_solver) =' "$dir/summary.txt" > "$dir/summary_compared.txt"
   cut -d, -f1-7 "$dir/slice_3d.csv" > "$dir/slice_compared.csv"
 done
-for f in summary_compared.txt slice_compared.csv line_load_along_axis.csv; do
+compared=(summary_compared.txt slice_compared.csv line_load_along_axis.csv)
+for f in core_deflection_along_axis.csv core_bending_stress_along_axis.csv; do
+  if [ -f "out_direct/$f" ]; then compared+=("$f"); fi
+done
+for f in "${compared[@]}"; do
   files_agree "$numdiff" 1e-6 1e-9 "out_direct/$f" "out_gmres-amg/$f" ||
     fail "$f differs between gmres-amg and direct"
   pass "$f: gmres-amg and direct agree (rel 1e-6)"

@@ -9,6 +9,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <rollnip/material/material_law.h>
 #include <rollnip/three_d/slice_mesh.h>
 
 #include <vector>
@@ -23,6 +24,30 @@ namespace rollnip
     FullMatrix<double>
     cell_pressure_mass(const FEValues<dim> &fv);
 
+    /// The augmented Lagrangian of the cells of one law: the augmentation
+    /// gamma and the modulus G' of the Schur block S_K^-1 ~ G' M_K^-1.
+    struct CellAugmentation
+    {
+      double gamma;         ///< [MPa]
+      double schur_modulus; ///< G' [MPa]
+    };
+
+    /**
+     * The augmentation of the cells of @p law, from the cell's own moduli
+     * (a cover layer and a steel core differ by 8e4 in G):
+     * - incompressible: gamma = 10 G, G' = G + gamma;
+     * - compressible with kappa = 1 / pressure_compliance() <= 10 G (the
+     *   steel core, nu = 0.3): gamma = kappa, which takes the cell's
+     *   pressure out of its displacement rows exactly (they get
+     *   B^T - gamma/kappa B^T = 0), so A is the cell's displacement
+     *   stiffness and S_K = M_K / kappa exactly: G' = kappa;
+     * - compressible with kappa > 10 G: gamma = 10 G and, with
+     *   B A_0^-1 B^T ~ M_K / G, S_K ~ M_K (kappa + G) / (kappa (G +
+     *   gamma)), G' = (G + gamma) / (1 + G / kappa).
+     */
+    CellAugmentation
+    cell_augmentation(const MaterialLaw<dim> &law);
+
     /**
      * GMRES with a block lower-triangular preconditioner for the Newton
      * system K = [A B^T; B 0] of the 3D body (Q1-P0 or Q2-P1), the 3D variant
@@ -34,7 +59,8 @@ namespace rollnip
      *          Q2) as ML's near-null space (with the three constant modes
      *          alone GMRES needs about 1.5 times the iterations on the
      *          slice),
-     *   S^-1 ~ G' M_p^-1, G' = G + gamma, one block per cell for the
+     *   S^-1 ~ G' M_p^-1, G' = G + gamma of the cell's own law
+     *          (cell_augmentation()), one block per cell for the
      *          discontinuous pressure: G' / |cell| for P0, G' M_K^-1 with
      *          the 4x4 mass matrix of the cell for P1.
      */
@@ -48,11 +74,11 @@ namespace rollnip
       /// The rigid-body modes and the Schur blocks of @p dof_handler's
       /// mesh (FE_Q(k)^3 x a discontinuous pressure), the support points
       /// and the cells' pressure mass through @p mapping (QGauss(k + 1));
-      /// @p schur_modulus G' [MPa].
+      /// @p schur_modulus G' [MPa] of the cells by their material id.
       void
-      setup(const Mapping<dim>    &mapping,
-            const DoFHandler<dim> &dof_handler,
-            const double           schur_modulus);
+      setup(const Mapping<dim>        &mapping,
+            const DoFHandler<dim>     &dof_handler,
+            const std::vector<double> &schur_modulus);
 
       /// Builds the AMG hierarchy of @p augmented; K is used by solve().
       /// A new AMG hierarchy for @p augmented, or the last one kept when
@@ -93,9 +119,9 @@ namespace rollnip
 
       /// G' M_K^-1 and the local pressure rows of every owned cell.
       void
-      collect_schur_blocks(const Mapping<dim>    &mapping,
-                           const DoFHandler<dim> &dof_handler,
-                           const double           schur_modulus);
+      collect_schur_blocks(const Mapping<dim>        &mapping,
+                           const DoFHandler<dim>     &dof_handler,
+                           const std::vector<double> &schur_modulus);
 
       const double                          tolerance;
       const unsigned int                    max_iterations;

@@ -277,14 +277,15 @@ namespace rollnip
 
       // Linear solver/Method = gmres-amg (slice_linear_solve.cc).
       const bool iterative;
-      /// gamma of the augmented Lagrangian, 10 G [MPa]: the Newton system
-      /// is solved as [A + gamma B^T M_p^-1 B, B^T; B, 0] (the same du;
-      /// M_p block diagonal, one block per cell: |cell| for P0, 4x4 for
-      /// P1), whose Schur complement G M_p^-1 + gamma M_p^-1 approximates
-      /// well whatever the inf-sup constant of Q1-P0; 0 with the direct
-      /// solver.
-      const double augmentation;
-      /// [A 0; 0 M_p/G], the AMG's matrix, assembled beside K.
+      /// gamma of the augmented Lagrangian and G' of the Schur blocks by
+      /// the cells' material id (layer_laws, cell_augmentation()): the
+      /// Newton system is solved as [A + gamma B^T M_p^-1 B, B^T; B, 0]
+      /// (the same du; M_p block diagonal, one block per cell: |cell| for
+      /// P0, 4x4 for P1), whose Schur complement G M_p^-1 + gamma M_p^-1
+      /// approximates well whatever the inf-sup constant of Q1-P0; empty
+      /// with the direct solver.
+      std::vector<CellAugmentation> augmentation;
+      /// [A 0; 0 M_p/G'], the AMG's matrix, assembled beside K.
       TrilinosWrappers::SparseMatrix    preconditioner_matrix;
       std::unique_ptr<SliceBlockSolver> block_amg;
 
@@ -316,8 +317,8 @@ namespace rollnip
       vertex_areas() const;
 
       /// Every cover layer's law, by the cells' material id (0: on the
-      /// core); law above is the surface layer's, the scale of the contact
-      /// rule and of the iterative solver.
+      /// core), and with the elastic core the steel's after them; law
+      /// above is the surface layer's, the scale of the contact rule.
       std::vector<std::unique_ptr<const MaterialLaw<dim>>> layer_laws;
     };
   } // namespace three_d
