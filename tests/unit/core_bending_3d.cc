@@ -32,13 +32,9 @@ namespace
   Parameters::ThreeD
   face(const unsigned int layers, const bool elastic, const std::string &v)
   {
-    auto t              = testing::slice_parameters(500, layers, true, 0.5, 3);
-    t.core_deflection   = v;
-    t.elastic_core      = elastic;
-    t.core_inner_radius = 35;
-    t.core_youngs_modulus = 210000;
-    t.core_poisson_ratio  = 0.3;
-    t.bearing_distance    = 600;
+    auto t            = testing::half_roll_core_face(layers);
+    t.core_deflection = v;
+    t.elastic_core    = elastic;
     return t;
   }
 

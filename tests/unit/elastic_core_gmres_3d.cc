@@ -25,25 +25,13 @@ using namespace rollnip;
 
 namespace
 {
-  const std::string scene =
-    "subsection Geometry\n set Inner radius = 47.2\n set Outer radius = "
-    "60.7\n set Sector angle = 180\nend\n"
-    "subsection Mesh\n set Radial cells = 6\n set Circumferential cells = "
-    "16\n set Circumferential grading = 10\nend\n"
-    "subsection Material\n set C1 = 0.25\n set C2 = 0.25\nend\n"
-    "subsection Boundary conditions\n set Far edge (id 3) = symmetry\nend\n"
-    "subsection Contact\n set Mode = indentation\n set Values = 1\n"
-    " set Indenter radius = 76.2\nend\n";
+  const std::string scene = testing::half_roll_core_scene(16);
 
   Parameters::ThreeD
   face(const unsigned int layers)
   {
-    auto t              = testing::slice_parameters(500, layers, true, 0.5, 3);
-    t.elastic_core      = true;
-    t.core_inner_radius = 35;
-    t.core_youngs_modulus = 210000;
-    t.core_poisson_ratio  = 0.3;
-    t.bearing_distance    = 600;
+    auto t         = testing::half_roll_core_face(layers);
+    t.elastic_core = true;
     return t;
   }
 

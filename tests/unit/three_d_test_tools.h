@@ -92,6 +92,21 @@ namespace rollnip
              "subsection Contact\n set Mode = indentation\n set Values = 1\n"
              " set Indenter radius = 76.2\nend\n";
     }
+
+    /// The 1000 mm face of the half-roll core tests (half of it modelled,
+    /// free end, 3 times graded) on a steel tube of bore 35 mm (E = 210
+    /// GPa, nu = 0.3) between journals 600 mm from the middle; rigid
+    /// unless the caller sets elastic_core.
+    inline Parameters::ThreeD
+    half_roll_core_face(const unsigned int layers)
+    {
+      auto t                = slice_parameters(500, layers, true, 0.5, 3);
+      t.core_inner_radius   = 35;
+      t.core_youngs_modulus = 210000;
+      t.core_poisson_ratio  = 0.3;
+      t.bearing_distance    = 600;
+      return t;
+    }
   } // namespace testing
 } // namespace rollnip
 
