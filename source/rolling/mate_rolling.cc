@@ -29,16 +29,11 @@ namespace rollnip
     const CoverTemperatureResult T =
       heat.solve(radial_heat_source(loss.circles, degree), mate_rolling);
     MateRolling m;
-    m.available           = true;
-    m.rolling_resistance  = loss.rolling_resistance;
-    m.power               = loss.power;
-    m.bond_temperature    = T.bond;
-    m.surface_temperature = T.surface;
-    m.max_temperature     = T.max;
-    m.heat_generated      = T.generated;
-    m.heat_to_air         = T.to_air;
-    m.heat_to_core        = T.to_core;
-    double tau            = 0;
+    m.available                        = true;
+    m.rolling_resistance               = loss.rolling_resistance;
+    m.power                            = loss.power;
+    static_cast<CoverHeatBalance &>(m) = T.heat_balance();
+    double tau                         = 0;
     for (const auto &layer : mate_rolling.layers)
       tau = std::max(tau, layer.longest_time());
     m.speed_over_nip = 1e3 * mate_rolling.speed * tau / half_chord;

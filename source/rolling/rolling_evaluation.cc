@@ -173,19 +173,14 @@ namespace rollnip
         heat.solve(radial_heat_source(rows[k].loss.circles, degree), rolling);
     n.heat_seconds = clock.wall_time();
 
-    const SpeedRow &main  = rows.front();
-    n.available           = true;
-    n.speed               = main.loss.speed;
-    n.rolling_resistance  = main.loss.rolling_resistance;
-    n.power               = main.loss.power;
-    n.bond_temperature    = main.heat.bond;
-    n.surface_temperature = main.heat.surface;
-    n.max_temperature     = main.heat.max;
-    n.heat_generated      = main.heat.generated;
-    n.heat_to_air         = main.heat.to_air;
-    n.heat_to_core        = main.heat.to_core;
-    const double tau      = longest_time(rolling);
-    n.speed_over_nip      = 1e3 * n.speed * tau / nip.half_chord;
+    const SpeedRow &main               = rows.front();
+    n.available                        = true;
+    n.speed                            = main.loss.speed;
+    n.rolling_resistance               = main.loss.rolling_resistance;
+    n.power                            = main.loss.power;
+    static_cast<CoverHeatBalance &>(n) = main.heat.heat_balance();
+    const double tau                   = longest_time(rolling);
+    n.speed_over_nip                   = 1e3 * n.speed * tau / nip.half_chord;
     n.linear_estimate =
       linear_estimate(body, nip, rolling, n.speed, indenter_radius);
     if (write_vtu)

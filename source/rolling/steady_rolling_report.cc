@@ -25,17 +25,12 @@ namespace rollnip
         if (std::abs(row.full.speed - surface_speed) >
             1e-12 * std::abs(surface_speed))
           continue;
-        f.available           = true;
-        f.speed               = row.full.speed;
-        f.rolling_resistance  = row.full.resistance_energy;
-        f.power               = row.full.power;
-        f.load                = row.full.load;
-        f.bond_temperature    = T.bond;
-        f.surface_temperature = T.surface;
-        f.max_temperature     = T.max;
-        f.heat_generated      = T.generated;
-        f.heat_to_air         = T.to_air;
-        f.heat_to_core        = T.to_core;
+        f.available                        = true;
+        f.speed                            = row.full.speed;
+        f.rolling_resistance               = row.full.resistance_energy;
+        f.power                            = row.full.power;
+        f.load                             = row.full.load;
+        static_cast<CoverHeatBalance &>(f) = T.heat_balance();
       }
     return f;
   }

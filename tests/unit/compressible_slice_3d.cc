@@ -21,20 +21,10 @@ namespace
   std::string
   scene(const double nu)
   {
-    return "subsection Geometry\n set Inner radius = 47.2\n set Outer "
-           "radius = 60.7\n set Sector angle = 90\nend\n"
-           "subsection Mesh\n set Radial cells = 8\n set Circumferential "
-           "cells = 18\n set Circumferential grading = 10\nend\n"
-           "subsection Material\n set C1 = 0.25\n set C2 = 0.25\n"
-           " set Poisson ratio = " +
-           testing::num(nu) +
-           "\nend\n"
-           "subsection Boundary conditions\n set Far edge (id 3) = free\nend\n"
-           "subsection Contact\n set Mode = indentation\n set Values = 1\n"
-           " set Indenter radius = 76.2\n set Conformity tolerance = 1e-8\n"
+    return testing::compressible_quarter_scene(nu) +
+           "subsection Contact\n set Conformity tolerance = 1e-8\n"
            " set Control tolerance = 1e-9\nend\n";
   }
-
 } // namespace
 
 int

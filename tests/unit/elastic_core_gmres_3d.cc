@@ -107,18 +107,8 @@ namespace
   compressible_slice(const double nu, const std::string &method)
   {
     const auto parameters = testing::parameters_from_string(
-      "subsection Geometry\n set Inner radius = 47.2\n set Outer radius = "
-      "60.7\n set Sector angle = 90\nend\n"
-      "subsection Mesh\n set Radial cells = 8\n set Circumferential cells = "
-      "18\n set Circumferential grading = 10\n set Global refinements = "
-      "1\nend\n"
-      "subsection Material\n set C1 = 0.25\n set C2 = 0.25\n"
-      " set Poisson ratio = " +
-      testing::num(nu) +
-      "\nend\n"
-      "subsection Boundary conditions\n set Far edge (id 3) = free\nend\n"
-      "subsection Contact\n set Mode = indentation\n set Values = 1\n"
-      " set Indenter radius = 76.2\nend\n"
+      testing::compressible_quarter_scene(nu) +
+      "subsection Mesh\n set Global refinements = 1\nend\n"
       "subsection Linear solver\n set Method = " +
       method + "\nend\n");
     three_d::SliceBody      body(parameters,

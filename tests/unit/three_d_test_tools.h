@@ -93,6 +93,26 @@ namespace rollnip
              " set Indenter radius = 76.2\nend\n";
     }
 
+    /// The quarter roll of the compressible-cover tests: the run-30 cover
+    /// of Poisson ratio @p nu over 90 deg on 8 x 18 cells, its far edge
+    /// free, pressed 1 mm by a 76.2 mm cylinder.
+    inline std::string
+    compressible_quarter_scene(const double nu)
+    {
+      return "subsection Geometry\n set Inner radius = 47.2\n set Outer "
+             "radius = 60.7\n set Sector angle = 90\nend\n"
+             "subsection Mesh\n set Radial cells = 8\n set Circumferential "
+             "cells = 18\n set Circumferential grading = 10\nend\n"
+             "subsection Material\n set C1 = 0.25\n set C2 = 0.25\n"
+             " set Poisson ratio = " +
+             num(nu) +
+             "\nend\n"
+             "subsection Boundary conditions\n set Far edge (id 3) = "
+             "free\nend\n"
+             "subsection Contact\n set Mode = indentation\n set Values = 1\n"
+             " set Indenter radius = 76.2\nend\n";
+    }
+
     /// The 1000 mm face of the half-roll core tests (half of it modelled,
     /// free end, 3 times graded) on a steel tube of bore 35 mm (E = 210
     /// GPa, nu = 0.3) between journals 600 mm from the middle; rigid

@@ -11,6 +11,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <rollnip/global.h>
+#include <rollnip/rolling/rolling_numbers.h>
 #include <rollnip/rolling/rolling_parameters.h>
 
 #include <functional>
@@ -32,6 +33,20 @@ namespace rollnip
     double generated = 0, to_air = 0, to_core = 0;
     /// (r [mm], T [degC]) at the nodes on the line of centres, by radius.
     std::vector<std::pair<double, double>> profile;
+
+    /// The temperatures and the heat balance as a report carries them.
+    CoverHeatBalance
+    heat_balance() const
+    {
+      CoverHeatBalance h;
+      h.bond_temperature    = bond;
+      h.surface_temperature = surface;
+      h.max_temperature     = max;
+      h.heat_generated      = generated;
+      h.heat_to_air         = to_air;
+      h.heat_to_core        = to_core;
+      return h;
+    }
   };
 
   /// T [degC] at radius @p r [mm] of a (r, T) @p profile sorted by r
