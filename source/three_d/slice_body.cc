@@ -252,6 +252,9 @@ namespace rollnip
             schur_modulus.push_back(a.schur_modulus);
           block_amg->setup(*mapping, dof_handler, schur_modulus);
         }
+      else
+        direct = std::make_unique<SparseDirectSolver>(
+          parameters.linear_solver.direct_solver);
     }
 
     void

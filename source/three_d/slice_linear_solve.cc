@@ -1,5 +1,3 @@
-#include <deal.II/lac/trilinos_solver.h>
-
 #include <rollnip/three_d/slice_body.h>
 
 #include <sstream>
@@ -21,7 +19,8 @@ namespace rollnip
              << " MPa in the surface layer, each cell's from its own law;"
              << " AMG with the rigid-body modes on the displacements)";
       else
-        name << "direct (" << settings.direct_solver << ')';
+        name << "direct (" << direct->name()
+             << ", the pattern analysed once, refactorised each Newton step)";
       return name.str();
     }
 
@@ -36,12 +35,9 @@ namespace rollnip
           block_amg->solve(system_rhs, du);
           return;
         }
-      SolverControl                  control(1, 0);
-      TrilinosWrappers::SolverDirect solver(
-        control,
-        TrilinosWrappers::SolverDirect::AdditionalData(
-          false, parameters.linear_solver.direct_solver));
-      solver.solve(system_matrix, du, system_rhs);
+      // The pattern of K is fixed (setup_system()): one analysis per body.
+      direct->factorize(system_matrix);
+      direct->solve(system_rhs, du);
     }
   } // namespace three_d
 } // namespace rollnip

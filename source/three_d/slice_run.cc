@@ -57,6 +57,10 @@ namespace rollnip
             << "n_dofs = " << body.n_dofs() << '\n'
             << "mpi_processes = " << processes << '\n'
             << "linear_solver = " << parameters.linear_solver.method << '\n'
+            << "symbolic_factorisations = "
+            << body.direct_factorisations().first << '\n'
+            << "factorisations = " << body.direct_factorisations().second
+            << '\n'
             << "slice_thickness_mm = " << three_d.slice_thickness << '\n'
             << "far_face = " << (three_d.fix_far_face ? "fixed axial" : "free")
             << '\n'

@@ -68,8 +68,15 @@ direct="$(awk -F, 'NR > 1 { n += $9 } END { print n + 0 }' out_direct/slice_3d.c
   fail "GMRES iterations: $gmres with gmres-amg, $direct with direct"
 pass "gmres-amg took $gmres GMRES iterations, direct none"
 
+# The direct solver analyses the fixed pattern once and refactorises
+# at every Newton step; gmres-amg factorises nothing.
+newton="$(awk -F, 'NR > 1 { n += $6 } END { print n + 0 }' out_direct/slice_3d.csv)"
+check_close "symbolic analyses, direct" "$(summary_value out_direct/summary.txt symbolic_factorisations)" 1 0
+check_close "factorisations, direct (= Newton steps)" "$(summary_value out_direct/summary.txt factorisations)" "$newton" 0
+check_close "factorisations, gmres-amg" "$(summary_value out_gmres-amg/summary.txt factorisations)" 0 0
+
 for dir in out_direct out_gmres-amg; do
-  grep -v -E '^(wall_time_s|mpi_processes|linear_solver) =' "$dir/summary.txt" > "$dir/summary_compared.txt"
+  grep -v -E '^(wall_time_s|mpi_processes|linear_solver|symbolic_factorisations|factorisations) =' "$dir/summary.txt" > "$dir/summary_compared.txt"
   cut -d, -f1-7 "$dir/slice_3d.csv" > "$dir/slice_compared.csv"
 done
 compared=(summary_compared.txt slice_compared.csv line_load_along_axis.csv)

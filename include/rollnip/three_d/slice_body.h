@@ -13,6 +13,7 @@
 #include <rollnip/contact/counter_surface.h>
 #include <rollnip/material/material_law.h>
 #include <rollnip/parameters.h>
+#include <rollnip/solvers/sparse_direct.h>
 #include <rollnip/three_d/core_deflection.h>
 #include <rollnip/three_d/slice_block_solver.h>
 #include <rollnip/three_d/slice_mesh.h>
@@ -22,6 +23,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <utility>
 
 namespace rollnip
 {
@@ -142,6 +144,16 @@ namespace rollnip
       /// The linear solver of the Newton steps, as printed at the start.
       std::string
       linear_solver_name() const;
+
+      /// Symbolic analyses and numeric factorisations of the direct solver
+      /// so far (0 with gmres-amg).
+      std::pair<unsigned int, unsigned int>
+      direct_factorisations() const
+      {
+        if (!direct)
+          return {0, 0};
+        return {direct->n_analyses, direct->n_factorisations};
+      }
 
       unsigned int
       n_cells() const
@@ -288,6 +300,10 @@ namespace rollnip
       /// [A 0; 0 M_p/G'], the AMG's matrix, assembled beside K.
       TrilinosWrappers::SparseMatrix    preconditioner_matrix;
       std::unique_ptr<SliceBlockSolver> block_amg;
+      /// Linear solver/Method = direct: MUMPS or KLU, which analyses the
+      /// fixed pattern once and refactorises numerically at each Newton
+      /// step.
+      std::unique_ptr<SparseDirectSolver> direct;
 
       // The prescribed core deflection (slice_core.cc).
       /// The bonded nodes' x dofs at R1 and their v(z) [mm].
