@@ -6,12 +6,29 @@
 #include <rollnip/three_d/slice_body.h>
 
 #include <cmath>
+#include <iomanip>
+#include <iostream>
 #include <limits>
 
 namespace rollnip
 {
   namespace three_d
   {
+    namespace
+    {
+      /// The active nodes of all processes (each counts the x dofs it owns).
+      unsigned int
+      count_active(const std::set<types::global_dof_index> &active,
+                   const IndexSet                          &owned,
+                   const MPI_Comm                           communicator)
+      {
+        unsigned int n = 0;
+        for (const auto x_dof : active)
+          n += owned.is_element(x_dof);
+        return Utilities::MPI::sum(n, communicator);
+      }
+    } // namespace
+
     void
     SliceBody::make_support_constraints(AffineConstraints<double> &c) const
     {
@@ -145,9 +162,21 @@ namespace rollnip
         three_d.elastic_core
           ? 1e-13 * layer_laws.back()->shear_modulus() / law->shear_modulus()
           : 0.;
+      // Output/Verbosity = detailed (or Nonlinear solver/Verbose): a line
+      // per Newton step on rank 0, so that a run of an hour shows where it
+      // is and how its solves go.
+      const bool verbose = parameters.nonlinear_solver.verbose;
+      const bool log =
+        verbose && Utilities::MPI::this_mpi_process(communicator) == 0;
+      Timer run_clock;
+      if (log)
+        std::cout << "    Newton at u0 = " << u0 << " mm\n"
+                  << "      step  |R_u|/|F|   sum|J-1|/V  gap [mm]   "
+                  << "active nodes  GMRES its   wall s" << std::endl;
       double previous = 1.;
       for (unsigned int it = 0; it < three_d.max_newton_iterations; ++it)
         {
+          Timer step_clock;
           // The inhomogeneities are the current gaps: rebuilt every step.
           make_constraints(u0);
           assemble();
@@ -161,16 +190,50 @@ namespace rollnip
                     (residual_u < floor && residual_u > 0.5 * previous)) &&
                    residual_q < 1e-12 &&
                    active_gap(u0) < 1e-10 * parameters.geometry.outer_radius)
-            return true;
+            {
+              const double gap = verbose ? active_gap(u0) : 0.; // collective
+              if (log)
+                std::cout << std::scientific << std::setprecision(3)
+                          << "      converged: |R_u|/|F| = " << residual_u
+                          << ", sum|J-1|/V = " << residual_q
+                          << ", gap = " << gap << " mm" << std::fixed
+                          << std::setprecision(1) << ", "
+                          << run_clock.wall_time() << " s" << std::defaultfloat
+                          << std::setprecision(6) << std::endl;
+              return true;
+            }
           previous = residual_u;
-          du       = 0;
+          // The largest gap of an active node: u0 itself at the first
+          // step (the indenter moved), then the linearisation's error.
+          const double       gap_before = verbose ? active_gap(u0) : 0.;
+          const unsigned int n_active =
+            count_active(active, owned, communicator);
+          const unsigned int gmres_before =
+            block_amg ? block_amg->n_iterations : 0;
+          du = 0;
           solve_linear(du);
           constraints.distribute(du);
           state = solution;
           state += du;
           solution = state;
           ++steps;
+          if (log)
+            std::cout << "      " << std::setw(4) << it + 1 << std::scientific
+                      << std::setprecision(3) << "  " << residual_u << "   "
+                      << residual_q << "  " << gap_before << "  "
+                      << std::setw(12) << n_active << "  " << std::setw(9)
+                      << (block_amg ? std::to_string(block_amg->n_iterations -
+                                                     gmres_before)
+                                    : std::string("-"))
+                      << std::fixed << std::setprecision(1) << "  "
+                      << std::setw(7) << step_clock.wall_time()
+                      << std::defaultfloat << std::setprecision(6) << std::endl;
         }
+      if (log)
+        std::cout << std::scientific << std::setprecision(3)
+                  << "      not converged in " << three_d.max_newton_iterations
+                  << " steps: |R_u|/|F| = " << residual_u << std::defaultfloat
+                  << std::setprecision(6) << std::endl;
       return false;
     }
 
@@ -230,15 +293,12 @@ namespace rollnip
       // twice its resultant, per unit length of face.
       nip.P = -2. * Utilities::MPI::sum(force_x, communicator) /
               three_d.slice_thickness;
-      nip.half_chord        = Utilities::MPI::max(chord, communicator);
-      nip.max_penetration   = Utilities::MPI::max(penetration, communicator);
-      z_min                 = Utilities::MPI::min(z_min, communicator);
-      z_max                 = Utilities::MPI::max(z_max, communicator);
-      nip.contact_length    = z_max > z_min ? z_max - z_min : 0.;
-      unsigned int n_active = 0;
-      for (const auto x_dof : active)
-        n_active += owned.is_element(x_dof);
-      nip.active_nodes = Utilities::MPI::sum(n_active, communicator);
+      nip.half_chord      = Utilities::MPI::max(chord, communicator);
+      nip.max_penetration = Utilities::MPI::max(penetration, communicator);
+      z_min               = Utilities::MPI::min(z_min, communicator);
+      z_max               = Utilities::MPI::max(z_max, communicator);
+      nip.contact_length  = z_max > z_min ? z_max - z_min : 0.;
+      nip.active_nodes    = count_active(active, owned, communicator);
       return nip;
     }
   } // namespace three_d
