@@ -207,7 +207,7 @@ namespace rollnip
           // step (the indenter moved), then the linearisation's error.
           const double       gap_before = verbose ? active_gap(u0) : 0.;
           const unsigned int n_active =
-            count_active(active, owned, communicator);
+            verbose ? count_active(active, owned, communicator) : 0;
           const unsigned int gmres_before =
             block_amg ? block_amg->n_iterations : 0;
           du = 0;
