@@ -799,13 +799,14 @@ namespace rollnip
       if (Utilities::MPI::this_mpi_process(comm) == 0)
         make_directories(dir);
       MPI_Barrier(comm);
+      const RollingOutput output{dir,
+                                 parameters.output.write_csv,
+                                 parameters.output.write_vtu};
       row.rolling         = evaluate_rolling(scene.roll().body(),
                                      row.nonlinear,
                                      rolling,
                                      parameters.contact.indenter_radius,
-                                     dir,
-                                     parameters.output.write_csv,
-                                     parameters.output.write_vtu,
+                                     output,
                                      circle_factor);
       row.rolling.thermal = thermal;
       if (rolling.mate && scene.description.covered_mate())

@@ -140,9 +140,7 @@ namespace rollnip
     const ContactResult                               &nip,
     const Parameters::Rolling                         &rolling,
     const double                                       indenter_radius,
-    const std::string                                 &directory,
-    const bool                                         write_csv,
-    const bool                                         write_vtu,
+    const RollingOutput                               &output,
     const std::function<double(double, unsigned int)> &circle_factor)
   {
     const bool root =
@@ -183,9 +181,10 @@ namespace rollnip
     n.speed_over_nip                   = 1e3 * n.speed * tau / nip.half_chord;
     n.linear_estimate =
       linear_estimate(body, nip, rolling, n.speed, indenter_radius);
-    if (write_vtu)
+    const std::string &directory = output.directory;
+    if (output.write_vtu)
       heat.write_vtu(directory, "temperature");
-    if (write_csv)
+    if (output.write_csv)
       {
         if (root)
           {

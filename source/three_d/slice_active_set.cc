@@ -188,19 +188,22 @@ namespace rollnip
           else if (it > 0 &&
                    (residual_u < 1e-10 ||
                     (residual_u < floor && residual_u > 0.5 * previous)) &&
-                   residual_q < 1e-12 &&
-                   active_gap(u0) < 1e-10 * parameters.geometry.outer_radius)
+                   residual_q < 1e-12)
             {
-              const double gap = verbose ? active_gap(u0) : 0.; // collective
-              if (log)
-                std::cout << std::scientific << std::setprecision(3)
-                          << "      converged: |R_u|/|F| = " << residual_u
-                          << ", sum|J-1|/V = " << residual_q
-                          << ", gap = " << gap << " mm" << std::fixed
-                          << std::setprecision(1) << ", "
-                          << run_clock.wall_time() << " s" << std::defaultfloat
-                          << std::setprecision(6) << std::endl;
-              return true;
+              // The residuals are global, so every rank gets here together.
+              const double gap = active_gap(u0); // collective
+              if (gap < 1e-10 * parameters.geometry.outer_radius)
+                {
+                  if (log)
+                    std::cout
+                      << std::scientific << std::setprecision(3)
+                      << "      converged: |R_u|/|F| = " << residual_u
+                      << ", sum|J-1|/V = " << residual_q << ", gap = " << gap
+                      << " mm" << std::fixed << std::setprecision(1) << ", "
+                      << run_clock.wall_time() << " s" << std::defaultfloat
+                      << std::setprecision(6) << std::endl;
+                  return true;
+                }
             }
           previous = residual_u;
           // The largest gap of an active node: u0 itself at the first

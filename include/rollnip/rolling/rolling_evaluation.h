@@ -13,16 +13,24 @@
 
 namespace rollnip
 {
+  /// Where evaluate_rolling() writes, and which of its files.
+  struct RollingOutput
+  {
+    std::string directory;
+    bool        write_csv = true;
+    bool        write_vtu = false;
+  };
+
   /**
    * The rolling post-process of the converged nip @p nip of @p body
    * (collective): the circles' strain history, the first-order loss at
    * every speed of @p rolling, the cover's temperature for each; prints
    * the headline on rank 0, warns (one line) when V tau / b is not small,
    * and writes rolling_profile.csv (dissipation and temperature over the
-   * cover's thickness) and rolling_speeds.csv to @p directory if
-   * @p write_csv, temperature.pvtu if @p write_vtu. @p indenter_radius
-   * [mm] (inf: flat) is for the linear estimate; 0: none. @p circle_factor
-   * as for first_order_loss().
+   * cover's thickness) and rolling_speeds.csv to @p output's directory if
+   * it asks for CSV, temperature.pvtu if for VTU. @p indenter_radius [mm]
+   * (inf: flat) is for the linear estimate; 0: none. @p circle_factor as
+   * for first_order_loss().
    */
   RollingNumbers
   evaluate_rolling(
@@ -30,9 +38,7 @@ namespace rollnip
     const ContactResult                               &nip,
     const Parameters::Rolling                         &rolling,
     const double                                       indenter_radius,
-    const std::string                                 &directory,
-    const bool                                         write_csv,
-    const bool                                         write_vtu,
+    const RollingOutput                               &output,
     const std::function<double(double, unsigned int)> &circle_factor = {});
 
   /// The key = value lines of @p r for contact.txt and summary.txt.
