@@ -6,7 +6,9 @@
 # table row per run; the same rows go to benchmarks/results/scaling_3d.csv
 # (or $SCALING_CSV). Every size runs with each linear solver of SOLVERS
 # (Linear solver/Method: direct, one MUMPS factorisation per Newton step,
-# or gmres-amg, GMRES with the block AMG preconditioner).
+# or gmres-amg, GMRES with the block AMG preconditioner). Each run prints
+# its Newton log (Output/Verbosity = detailed) to a temporary file whose
+# name goes to standard error: `tail -f` it to watch a long run.
 #
 # Usage: bash benchmarks/scaling_3d.sh [LEVEL:LAYERS ...]
 #   default sizes: 3:2 (about 0.10 M DoFs), 4:2 (0.41 M), 4:4 (0.71 M);
@@ -108,6 +110,7 @@ end
 subsection Output
   set Directory = $out
   set Write VTU = false
+  set Verbosity = detailed
 end
 PRM
     oversub=no
@@ -119,6 +122,9 @@ PRM
         launcher+=(--oversubscribe)
       fi
     fi
+    # The Newton log (Output/Verbosity = detailed) shows a long run's
+    # progress, step by step, while it runs.
+    echo "scaling_3d: $element, level $level, $layers layers, $solver, $np processes: Newton log in $work/log.txt" >&2
     rc=0
     MEM_DIR="$work/mem" RUN_TIMEOUT="$run_timeout" \
       /usr/bin/time -f %e -o "$work/elapsed" \
