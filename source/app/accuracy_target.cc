@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -182,6 +183,17 @@ namespace rollnip
       {3e-3, 5e-5, 3e-5, 3e-3, 2e-3, 3.5e-3, 1e-2, 1e-2}, // load
       {1e-6, 9e-3, 5e-3, 1e-3, 5e-3, 1e-2, 1e-2, 1e-2}};  // nip angle
 
+    /// With theta0 prescribed, the largest estimated relative error of
+    /// each quantity of the default scene's nips (theta0 = 4, 8, 12 deg)
+    /// extrapolated at order 1 from levels 2 and 1, its estimate from
+    /// level 0 (extrapolate_first_order()), rounded up; it falls at the
+    /// element's extrapolated_order() per level. Measured for P: Q1-P0
+    /// 1.5e-3, 2.8e-4, 1.1e-4, 3.7e-5 at levels 2 to 5; Q2-P1 5.6e-4,
+    /// 1.3e-4, 2.9e-5 at levels 2 to 4.
+    constexpr double extrapolated_level2_error[2][NipQuantity::n_quantities] = {
+      {1e-6, 1.5e-3, 1.3e-3, 5.5e-4, 1.6e-3, 1e-3, 2.3e-3, 1e-3}, // Q1-P0
+      {1e-6, 6e-4, 3e-4, 1.2e-4, 1e-3, 5e-4, 3.5e-4, 9e-4}};      // Q2-P1
+
     /// DoFs of the default scene's roll at level 0 per element, and of
     /// Q2-P1 on its halved coarse mesh (4 x 11 cells).
     constexpr double level0_dofs[2]     = {486, 1690};
@@ -232,7 +244,11 @@ namespace rollnip
     {
       return element_name(c.element) + " at mesh level " +
              std::to_string(c.level) +
-             (c.halved_mesh ? " of the halved coarse mesh" : "");
+             (c.halved_mesh ? " of the halved coarse mesh" : "") +
+             (c.extrapolated ? " extrapolated at order 1 from levels " +
+                                 std::to_string(c.level - 2) + " to " +
+                                 std::to_string(c.level)
+                             : "");
     }
 
     /// The largest estimated relative error of @p q over @p rows; inf if
@@ -261,7 +277,61 @@ namespace rollnip
       types::global_dof_index n_dofs  = 0;
       std::vector<double>     estimate; ///< per target quantity
       bool                    met = false;
+      /// An extrapolated candidate's numbers, per nip.
+      std::vector<ExtrapolatedNumbers> extrapolated;
     };
+
+    /// The largest estimated relative error of @p q over the extrapolated
+    /// @p nips.
+    double
+    largest_estimate(const std::vector<ExtrapolatedNumbers> &nips,
+                     const NipQuantity::Index                q)
+    {
+      double worst = 0;
+      for (const auto &x : nips)
+        worst =
+          std::max(worst,
+                   x.value[q] == 0 ? std::numeric_limits<double>::infinity()
+                                   : x.error[q] / std::abs(x.value[q]));
+      return worst;
+    }
+
+    /// Solves the sweep of @p p at its level and at the two below (in
+    /// extrapolation/level-K of the output directory, without VTU), all
+    /// without the error estimate's companion, and extrapolates each
+    /// nip's numbers at order 1 into @p a. The output directory holds
+    /// the finest level's files. Returns the exit code.
+    int
+    solve_extrapolated(Parameters::AllParameters p,
+                       Attempt                  &a,
+                       std::vector<NipRow>      &rows,
+                       MPI_Comm                  communicator)
+    {
+      p.accuracy.error_estimate              = false;
+      const unsigned int               level = p.mesh.global_refinements;
+      std::vector<std::vector<NipRow>> below;
+      for (const unsigned int k : {2u, 1u})
+        {
+          Parameters::AllParameters q = p;
+          q.mesh.global_refinements   = level - k;
+          q.output.directory = p.output.directory + "/extrapolation/level-" +
+                               std::to_string(level - k);
+          q.output.write_vtu = false;
+          below.emplace_back();
+          if (const int code = run_nip_study(q, communicator, &below.back()))
+            return code;
+        }
+      if (const int code = run_nip_study(p, communicator, &rows))
+        return code;
+      for (unsigned int i = 0; i < rows.size(); ++i)
+        if (i < below[0].size() && i < below[1].size())
+          a.extrapolated.push_back(
+            extrapolate_first_order(nip_numbers(rows[i]),
+                                    nip_numbers(below[1][i]),
+                                    nip_numbers(below[0][i]),
+                                    p.discretization.element));
+      return a.extrapolated.size() == rows.size() ? 0 : 1;
+    }
 
     /// Solves the sweep of @p parameters with @p candidate's element and
     /// level and the error estimate on.
@@ -299,14 +369,18 @@ namespace rollnip
       std::vector<NipRow> rows;
       a.candidate = candidate;
       Timer timer;
-      a.code    = run_nip_study(p, communicator, &rows);
+      a.code    = candidate.extrapolated
+                    ? solve_extrapolated(p, a, rows, communicator)
+                    : run_nip_study(p, communicator, &rows);
       a.seconds = timer.wall_time();
       a.n_nips  = rows.size();
       a.n_dofs  = rows.empty() ? 0 : rows.front().n_dofs;
       a.met     = a.code == 0 && !rows.empty();
       for (const auto q : target.quantities)
         {
-          a.estimate.push_back(largest_estimate(rows, q));
+          a.estimate.push_back(candidate.extrapolated
+                                 ? largest_estimate(a.extrapolated, q)
+                                 : largest_estimate(rows, q));
           a.met = a.met && a.estimate.back() <= target.target;
         }
       return a;
@@ -359,7 +433,7 @@ namespace rollnip
                    const std::string                &dir)
     {
       write_atomically(dir + "/accuracy_target.csv", [&](std::ostream &out) {
-        out << "element,level,coarse_mesh,dofs,nips,wall_time_s,"
+        out << "element,level,coarse_mesh,answer,dofs,nips,wall_time_s,"
                "target_relative";
         for (const auto q : target.quantities)
           out << ",estimated_relative_error_" << NipQuantity::key(q);
@@ -368,6 +442,7 @@ namespace rollnip
           {
             out << element_name(a.candidate.element) << ',' << a.candidate.level
                 << ',' << (a.candidate.halved_mesh ? "halved" : "file") << ','
+                << (a.candidate.extrapolated ? "extrapolated" : "solved") << ','
                 << a.n_dofs << ',' << a.n_nips << ',' << a.seconds << ','
                 << target.target;
             for (const double e : a.estimate)
@@ -377,6 +452,70 @@ namespace rollnip
       });
     }
 
+    /// "N_per_mm" as "N/mm".
+    std::string
+    screen_unit(const NipQuantity::Index q)
+    {
+      std::string u = NipQuantity::unit(q);
+      if (const auto i = u.find("_per_"); i != std::string::npos)
+        u.replace(i, 5, "/");
+      return u;
+    }
+
+    /// accuracy_target_values.csv: each nip's numbers extrapolated by
+    /// attempt @p a and their estimated errors; the target quantities on
+    /// the screen (@p out).
+    void
+    write_extrapolated(const Attempt                    &a,
+                       const Parameters::AccuracyTarget &target,
+                       const std::string                &dir,
+                       std::ostream                     &out)
+    {
+      write_atomically(
+        dir + "/accuracy_target_values.csv", [&](std::ostream &csv) {
+          csv << "nip";
+          for (unsigned int q = 0; q < NipQuantity::n_quantities; ++q)
+            {
+              const auto i = NipQuantity::Index(q);
+              csv << ',' << NipQuantity::key(i) << '_' << NipQuantity::unit(i)
+                  << ',' << NipQuantity::key(i) << "_err_"
+                  << NipQuantity::unit(i);
+            }
+          csv << '\n' << std::setprecision(10);
+          for (unsigned int n = 0; n < a.extrapolated.size(); ++n)
+            {
+              csv << n + 1;
+              for (unsigned int q = 0; q < NipQuantity::n_quantities; ++q)
+                csv << ',' << a.extrapolated[n].value[q] << ','
+                    << a.extrapolated[n].error[q];
+              csv << '\n';
+            }
+        });
+      out << "Extrapolated at order 1 from mesh levels "
+          << a.candidate.level - 2 << " to " << a.candidate.level
+          << " (accuracy_target_values.csv; the other files are level "
+          << a.candidate.level << "'s):\n";
+      for (unsigned int n = 0; n < a.extrapolated.size(); ++n)
+        {
+          const auto        &x = a.extrapolated[n];
+          std::ostringstream line;
+          line << "  nip " << n + 1
+               << ", theta0 = " << x.value[NipQuantity::theta0] << " deg:";
+          for (unsigned int k = 0; k < target.quantities.size(); ++k)
+            {
+              const auto q = target.quantities[k];
+              line << (k ? ", " : " ") << NipQuantity::label(q) << " = "
+                   << std::setprecision(7) << x.value[q] << ' '
+                   << screen_unit(q) << " (estimated error "
+                   << std::setprecision(2)
+                   << 100 * x.error[q] / std::abs(x.value[q]) << " %)"
+                   << std::setprecision(6);
+            }
+          out << line.str() << '\n';
+        }
+      out << std::flush;
+    }
+
     /// The screen line of attempt @p a.
     std::string
     describe(const Attempt &a, const Parameters::AccuracyTarget &target)
@@ -384,6 +523,11 @@ namespace rollnip
       std::ostringstream out;
       out << element_name(a.candidate.element) << " level " << a.candidate.level
           << (a.candidate.halved_mesh ? " of the halved coarse mesh" : "")
+          << (a.candidate.extrapolated
+                ? ", extrapolated with levels " +
+                    std::to_string(a.candidate.level - 2) + " and " +
+                    std::to_string(a.candidate.level - 1)
+                : "")
           << " (" << a.n_dofs << " DoFs, " << std::fixed << std::setprecision(2)
           << a.seconds << " s for " << a.n_nips
           << " nip(s)): largest estimated";
@@ -420,6 +564,15 @@ namespace rollnip
       c.push_back({Parameters::Element::q1_p0, level, cost(0, level)});
     for (unsigned int level = 0; level <= 3; ++level)
       c.push_back({Parameters::Element::q2_p1, level, cost(1, level)});
+    // Extrapolated (theta0 prescribed): the three levels, no companion.
+    for (unsigned int e = 0; e < 2; ++e)
+      for (unsigned int level = 2; level <= (e == 0 ? 5u : 4u); ++level)
+        c.push_back(
+          {e == 0 ? Parameters::Element::q1_p0 : Parameters::Element::q2_p1,
+           level,
+           level0_dofs[e] * 21 * std::pow(4., level - 2.),
+           false,
+           true});
     // Its level 0 would need the finer companion and gain nothing.
     for (unsigned int level = 1; level <= 3; ++level)
       c.push_back({Parameters::Element::q2_p1,
@@ -438,6 +591,14 @@ namespace rollnip
                   const NipQuantity::Index      q,
                   const Parameters::ContactMode mode)
   {
+    if (candidate.extrapolated)
+      return mode == Parameters::ContactMode::nip_angle
+               ? extrapolated_level2_error[element_index(candidate.element)]
+                                          [q] *
+                   std::pow(2.,
+                            extrapolated_order(candidate.element) *
+                              (2. - candidate.level))
+               : std::numeric_limits<double>::infinity();
     const double p = error_order(candidate.element, q, mode);
     if (candidate.halved_mesh)
       {
@@ -496,6 +657,20 @@ namespace rollnip
                            calibration);
       }
     const Attempt &last = attempts.back();
+    const auto    &dir  = parameters.output.directory;
+    if (root)
+      {
+        // Only the last attempt's files stay: an earlier extrapolated
+        // candidate's coarse levels and numbers would not be this run's.
+        // A failed extrapolated attempt keeps the levels it solved.
+        std::error_code ignored;
+        if (!last.candidate.extrapolated || last.code != 0)
+          std::filesystem::remove(dir + "/accuracy_target_values.csv", ignored);
+        if (!last.candidate.extrapolated)
+          std::filesystem::remove_all(dir + "/extrapolation", ignored);
+        else if (last.code == 0)
+          write_extrapolated(last, target, dir, std::cout);
+      }
     if (last.code != 0)
       return last.code; // the sweep said why
     if (root)
@@ -505,7 +680,13 @@ namespace rollnip
                     << " % met with " << candidate_name(last.candidate)
                     << " after " << attempts.size() << " run(s), " << std::fixed
                     << std::setprecision(2) << timer.wall_time()
-                    << " s in all; the results files are that run's"
+                    << " s in all; the results files are "
+                    << (last.candidate.extrapolated
+                          ? "those of level " +
+                              std::to_string(last.candidate.level) +
+                              ", the extrapolated numbers in "
+                              "accuracy_target_values.csv"
+                          : std::string("that run's"))
                     << std::defaultfloat << std::endl;
         else
           std::cerr << "rollnip: error: Accuracy/Target " << 100 * target.target

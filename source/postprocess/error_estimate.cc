@@ -136,4 +136,27 @@ namespace rollnip
        e.error[half_chord] / std::abs(answer[half_chord]));
     return e;
   }
+
+  double
+  extrapolated_order(const Parameters::Element element)
+  {
+    return element == Parameters::Element::q1_p0 ? 1.5 : 2;
+  }
+
+  ExtrapolatedNumbers
+  extrapolate_first_order(const NipNumbers         &fine,
+                          const NipNumbers         &middle,
+                          const NipNumbers         &coarse,
+                          const Parameters::Element element)
+  {
+    const double        f = std::pow(2., extrapolated_order(element));
+    ExtrapolatedNumbers x;
+    for (unsigned int q = 0; q < NipQuantity::n_quantities; ++q)
+      {
+        x.value[q]          = 2 * fine[q] - middle[q];
+        const double before = 2 * middle[q] - coarse[q];
+        x.error[q]          = std::abs(x.value[q] - before) / (f - 1);
+      }
+    return x;
+  }
 } // namespace rollnip

@@ -49,6 +49,11 @@ namespace rollnip
     /// with more nip cells, and its error estimate's companion is then
     /// the cheap coarse level instead of the finer one.
     bool halved_mesh = false;
+    /// With theta0 prescribed only: the answer is extrapolated at order 1
+    /// from this level and the one below, and its error estimated from
+    /// the level below that (extrapolate_first_order()); the three levels
+    /// are solved without the error estimate's companion.
+    bool extrapolated = false;
   };
 
   /**
@@ -70,13 +75,16 @@ namespace rollnip
   /// and of its error estimate's companion (Q2-P1 has about 3.5 times the
   /// DoFs of Q1-P0 at the same level; the companion of a level-0 run is
   /// the finer level 1, so Q1-P0 at level 1 costs about as much as at
-  /// level 0).
+  /// level 0); and, for theta0 prescribed, the extrapolated Q1-P0 at
+  /// levels 2 to 5 and Q2-P1 at levels 2 to 4, which cost the DoFs of
+  /// their three levels.
   std::vector<AccuracyCandidate>
   accuracy_candidates();
 
   /// The predicted largest relative error of quantity @p q of the default
   /// scene's nips for @p candidate under @p mode, from the measured
-  /// level-0 errors and the orders of error_order() (doc/accuracy.md).
+  /// level-0 errors and the orders of error_order() (doc/accuracy.md);
+  /// infinite for an extrapolated candidate unless theta0 is prescribed.
   double
   predicted_error(const AccuracyCandidate      &candidate,
                   const NipQuantity::Index      q,

@@ -93,6 +93,37 @@ namespace rollnip
                   const Parameters::ContactMode mode,
                   const unsigned int            level,
                   const unsigned int            companion_level);
+
+  /// A nip's numbers extrapolated from three mesh levels, and their
+  /// estimated errors.
+  struct ExtrapolatedNumbers
+  {
+    NipNumbers value{}; ///< in the numbers' units
+    NipNumbers error{}; ///< absolute, in the numbers' units
+  };
+
+  /// The order at which numbers extrapolated at order 1 from three levels
+  /// (extrapolate_first_order()) converge with @p element at a prescribed
+  /// theta0, measured on the default scene at 4, 8, 12 deg against the
+  /// other element family (doc/accuracy.md): the changes of P's
+  /// extrapolation fall by 0.22 to 0.29 per level with Q2-P1 (order 2),
+  /// by 0.34 to 0.39 with Q1-P0 at 12 deg (order 1.5).
+  double
+  extrapolated_order(const Parameters::Element element);
+
+  /**
+   * Richardson at order 1 for numbers that converge at first order (with
+   * theta0 prescribed, doc/accuracy.md "An accuracy target"): from the
+   * nip at mesh levels L (@p fine), L - 1 (@p middle) and L - 2
+   * (@p coarse), the value 2 fine - middle, and its error as the change
+   * from the same extrapolation one level down, 2 middle - coarse, over
+   * 2^q - 1 with q = extrapolated_order(@p element).
+   */
+  ExtrapolatedNumbers
+  extrapolate_first_order(const NipNumbers         &fine,
+                          const NipNumbers         &middle,
+                          const NipNumbers         &coarse,
+                          const Parameters::Element element);
 } // namespace rollnip
 
 #endif
