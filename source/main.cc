@@ -7,6 +7,7 @@
 #include <rollnip/app/pressure_run.h>
 #include <rollnip/app/quick_nip.h>
 #include <rollnip/app/refinement_study.h>
+#include <rollnip/app/run_parameters.h>
 #include <rollnip/engineering_inputs.h>
 #include <rollnip/interrupt.h>
 #include <rollnip/mpi_start.h>
@@ -133,18 +134,16 @@ main(int argc, char **argv)
 
   install_interrupt_handlers();
   return run_guarded(root, [&]() {
-    Parameters::AllParameters parameters;
-    parameters.read(file);
+    RunParameters run;
+    run.read(file);
+    auto &parameters = run.scene;
     for (const auto &warning : ToleranceFloor::apply(parameters))
       if (root)
         std::cerr << "rollnip: warning: " << warning << std::endl;
-    Parameters::Face face;
-    face.read(file);
-    Parameters::AccuracyTarget accuracy;
-    accuracy.read(file);
-    const auto          study_values = Parameters::StudyValues::read(file);
-    Parameters::Rolling rolling;
-    rolling.read(file);
+    const auto &face     = run.face;
+    const auto &accuracy = run.accuracy;
+    const auto &rolling  = run.rolling;
+    const auto &three_d  = run.three_d;
     AssertThrow(!rolling.enabled ||
                   (!face.enabled && parameters.study.levels.empty() &&
                    accuracy.target == 0),
@@ -158,8 +157,6 @@ main(int argc, char **argv)
       std::cout << EngineeringInputs::describe(parameters);
     if (face.enabled && !validate_only)
       return run_face(parameters, face, communicator);
-    Parameters::ThreeD three_d;
-    three_d.read(file);
     if (three_d.enabled && !validate_only)
       return run_three_d(parameters, three_d, communicator);
     if (three_d.enabled && validate_only && three_d::is_drawn_slice(parameters))
@@ -170,7 +167,7 @@ main(int argc, char **argv)
     if (validate_only)
       return validate_mesh(parameters, file, communicator);
     if (!parameters.study.levels.empty())
-      return run_refinement_study(parameters, communicator, study_values);
+      return run_refinement_study(parameters, communicator, run.study_values);
     if (accuracy.target > 0)
       return run_to_accuracy_target(parameters, accuracy, communicator);
     const Parameters::AllParameters graded =

@@ -1038,6 +1038,13 @@ namespace rollnip
     void
     AllParameters::read(const std::string &filename)
     {
+      ParameterHandler prm;
+      read(filename, prm);
+    }
+
+    void
+    AllParameters::read(const std::string &filename, ParameterHandler &prm)
+    {
       {
         std::ifstream in(filename);
         AssertThrow(in.good(),
@@ -1048,7 +1055,6 @@ namespace rollnip
                     ExcMessage("parameter file '" + filename +
                                "' is not a regular file (a directory?)"));
       }
-      ParameterHandler prm;
       declare(prm);
       const ChangedEntries changed(prm);
       prm.parse_input(filename);

@@ -371,6 +371,11 @@ namespace rollnip
       /// unknown entries, values out of range, inconsistent geometry.
       void
       read(const std::string &filename);
+      /// The same, with every entry declared in and parsed into @p prm,
+      /// for the subsections that other parts of the program read from it
+      /// (RunParameters).
+      void
+      read(const std::string &filename, ParameterHandler &prm);
 
       /**
        * Checks what the patterns of ParameterHandler cannot: relations

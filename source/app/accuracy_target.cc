@@ -122,16 +122,10 @@ namespace rollnip
     }
 
     void
-    AccuracyTarget::read(const std::string &filename)
+    AccuracyTarget::check(const AllParameters &p) const
     {
-      ParameterHandler prm;
-      AllParameters::declare(prm);
-      prm.parse_input(filename);
-      parse(prm);
       if (target == 0)
         return;
-      AllParameters p;
-      p.parse(prm);
       AssertThrow(p.contact.mode != ContactMode::none,
                   ExcMessage("Accuracy/Target needs a contact scene "
                              "(Contact/Mode = nip angle, load or "

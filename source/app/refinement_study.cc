@@ -105,19 +105,6 @@ namespace rollnip
           values.push_back(x * scale);
         }
     }
-
-    StudyValues
-    StudyValues::read(const std::string &filename)
-    {
-      ParameterHandler prm;
-      AllParameters::declare(prm);
-      prm.parse_input(filename);
-      AllParameters scene;
-      scene.parse(prm);
-      StudyValues nips;
-      nips.parse(prm, scene);
-      return nips;
-    }
   } // namespace Parameters
 
   namespace

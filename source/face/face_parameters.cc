@@ -374,15 +374,5 @@ namespace rollnip
                              "Mating roll = beam (a rigid roll does not "
                              "bend)"));
     }
-
-    void
-    Face::read(const std::string &filename)
-    {
-      ParameterHandler prm;
-      AllParameters::declare(prm);
-      prm.parse_input(filename);
-      parse(prm);
-      validate();
-    }
   } // namespace Parameters
 } // namespace rollnip

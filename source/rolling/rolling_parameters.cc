@@ -484,21 +484,5 @@ namespace rollnip
                              "Contact/Compare with linear theory = false and "
                              "Accuracy/Error estimate = false"));
     }
-
-    void
-    Rolling::read(const std::string &filename)
-    {
-      ParameterHandler prm;
-      AllParameters::declare(prm);
-      prm.parse_input(filename);
-      AllParameters scene;
-      scene.parse(prm);
-      parse(prm,
-            scene.material.n_layers(),
-            scene.contact.surface_speed,
-            scene.mating_roll.covered ? scene.mating_roll.material.n_layers()
-                                      : 0);
-      validate(scene);
-    }
   } // namespace Parameters
 } // namespace rollnip

@@ -150,14 +150,5 @@ namespace rollnip
       AssertThrow(approach_step > 0,
                   ExcMessage("Three d/Approach step must be positive"));
     }
-
-    void
-    ThreeD::read(const std::string &filename)
-    {
-      ParameterHandler prm;
-      AllParameters::declare(prm);
-      prm.parse_input(filename);
-      parse(prm);
-    }
   } // namespace Parameters
 } // namespace rollnip

@@ -29,10 +29,9 @@ namespace rollnip
       declare(ParameterHandler &prm);
       void
       parse(ParameterHandler &prm);
-      /// The entries of the parameter file @p filename (read with every
-      /// subsection declared), checked against the rest of the scene.
+      /// With a target: checks it against the rest of the scene @p scene.
       void
-      read(const std::string &filename);
+      check(const AllParameters &scene) const;
     };
   } // namespace Parameters
 

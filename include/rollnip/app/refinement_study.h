@@ -50,9 +50,6 @@ namespace rollnip
       /// The entry of @p prm, in the unit of Contact/Values of @p scene.
       void
       parse(ParameterHandler &prm, const AllParameters &scene);
-      /// The entry of the parameter file @p filename.
-      static StudyValues
-      read(const std::string &filename);
     };
   } // namespace Parameters
 

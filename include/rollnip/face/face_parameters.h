@@ -102,10 +102,6 @@ namespace rollnip
       /// Relations the patterns cannot check; throws naming the entry.
       void
       validate() const;
-      /// The Face subsection of the parameter file @p filename (read
-      /// with every other subsection declared), validated.
-      void
-      read(const std::string &filename);
     };
   } // namespace Parameters
 } // namespace rollnip

@@ -106,11 +106,6 @@ namespace rollnip
       /// entry.
       void
       validate(const AllParameters &scene) const;
-      /// The Rolling subsection of the parameter file @p filename (read
-      /// with every other subsection declared), checked; one-line errors
-      /// name the entry.
-      void
-      read(const std::string &filename);
 
       /// The layer of the cover @p layer's hysteresis (one layer: all).
       const ViscousLayer &

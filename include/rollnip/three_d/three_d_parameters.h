@@ -47,10 +47,6 @@ namespace rollnip
       declare(ParameterHandler &prm);
       void
       parse(ParameterHandler &prm);
-      /// The Three d subsection of @p filename (read with every other
-      /// subsection declared), validated.
-      void
-      read(const std::string &filename);
     };
   } // namespace Parameters
 } // namespace rollnip
