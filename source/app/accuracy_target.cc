@@ -245,6 +245,15 @@ namespace rollnip
                              : "");
     }
 
+    /// The larger of @p worst and the relative estimate @p e; inf if @p e
+    /// is not finite: a nip without an estimate never meets a target.
+    double
+    larger_estimate(const double worst, const double e)
+    {
+      return std::isfinite(e) ? std::max(worst, e)
+                              : std::numeric_limits<double>::infinity();
+    }
+
     /// The largest estimated relative error of @p q over @p rows; inf if
     /// a nip has none.
     double
@@ -253,11 +262,8 @@ namespace rollnip
     {
       double worst = 0;
       for (const auto &row : rows)
-        {
-          const double e = row.error.relative(q, nip_numbers(row)[q]);
-          worst          = std::isfinite(e) ? std::max(worst, e)
-                                            : std::numeric_limits<double>::infinity();
-        }
+        worst =
+          larger_estimate(worst, row.error.relative(q, nip_numbers(row)[q]));
       return worst;
     }
 
@@ -276,17 +282,14 @@ namespace rollnip
     };
 
     /// The largest estimated relative error of @p q over the extrapolated
-    /// @p nips.
+    /// @p nips; inf if one is not finite.
     double
     largest_estimate(const std::vector<ExtrapolatedNumbers> &nips,
                      const NipQuantity::Index                q)
     {
       double worst = 0;
       for (const auto &x : nips)
-        worst =
-          std::max(worst,
-                   x.value[q] == 0 ? std::numeric_limits<double>::infinity()
-                                   : x.error[q] / std::abs(x.value[q]));
+        worst = larger_estimate(worst, x.error[q] / std::abs(x.value[q]));
       return worst;
     }
 
@@ -317,14 +320,17 @@ namespace rollnip
         }
       if (const int code = run_nip_study(p, communicator, &rows))
         return code;
+      AssertThrow(below[0].size() == rows.size() &&
+                    below[1].size() == rows.size(),
+                  ExcMessage("Accuracy/Target: the three mesh levels solved "
+                             "different numbers of nips"));
       for (unsigned int i = 0; i < rows.size(); ++i)
-        if (i < below[0].size() && i < below[1].size())
-          a.extrapolated.push_back(
-            extrapolate_first_order(nip_numbers(rows[i]),
-                                    nip_numbers(below[1][i]),
-                                    nip_numbers(below[0][i]),
-                                    p.discretization.element));
-      return a.extrapolated.size() == rows.size() ? 0 : 1;
+        a.extrapolated.push_back(
+          extrapolate_first_order(nip_numbers(rows[i]),
+                                  nip_numbers(below[1][i]),
+                                  nip_numbers(below[0][i]),
+                                  p.discretization.element));
+      return 0;
     }
 
     /// Solves the sweep of @p parameters with @p candidate's element and
@@ -515,16 +521,9 @@ namespace rollnip
     describe(const Attempt &a, const Parameters::AccuracyTarget &target)
     {
       std::ostringstream out;
-      out << element_name(a.candidate.element) << " level " << a.candidate.level
-          << (a.candidate.halved_mesh ? " of the halved coarse mesh" : "")
-          << (a.candidate.extrapolated
-                ? ", extrapolated with levels " +
-                    std::to_string(a.candidate.level - 2) + " and " +
-                    std::to_string(a.candidate.level - 1)
-                : "")
-          << " (" << a.n_dofs << " DoFs, " << std::fixed << std::setprecision(2)
-          << a.seconds << " s for " << a.n_nips
-          << " nip(s)): largest estimated";
+      out << candidate_name(a.candidate) << " (" << a.n_dofs << " DoFs, "
+          << std::fixed << std::setprecision(2) << a.seconds << " s for "
+          << a.n_nips << " nip(s)): largest estimated";
       for (unsigned int k = 0; k < target.quantities.size(); ++k)
         out << (k ? ", " : " ") << NipQuantity::label(target.quantities[k])
             << ' ' << std::setprecision(3) << 100 * a.estimate[k] << " %";
