@@ -81,7 +81,8 @@ namespace rollnip
                                    "Circumferential grading",
                                    "Radial grading",
                                    "Nip cells",
-                                   "Nip grading"})
+                                   "Nip grading",
+                                   "Edge refinements"})
             if (changed.changed(m + name))
               builtin.push_back(m + name);
           add(lines,

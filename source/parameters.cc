@@ -248,6 +248,16 @@ namespace rollnip
                            "small against the cover; it relaxes towards 1 "
                            "(uniform) as the nip half-width reaches the "
                            "cover thickness (doc/accuracy.md)");
+        declare_documented(prm,
+                           "Edge refinements",
+                           "0",
+                           Patterns::Integer(0, 8),
+                           "Nip-fitted mesh: times the cells touching the "
+                           "contact edge are halved after Global "
+                           "refinements (hanging nodes); with theta0 "
+                           "prescribed each halves the first-order error "
+                           "that the edge's cells put into P with Q2-P1 "
+                           "(doc/accuracy.md)");
       }
     } // namespace
 
@@ -280,6 +290,7 @@ namespace rollnip
                                                      : NipFitting::automatic;
       nip_cells                 = prm.get_integer("Nip cells");
       nip_grading               = prm.get_double("Nip grading");
+      edge_refinements          = prm.get_integer("Edge refinements");
       prm.leave_subsection();
     }
 

@@ -70,6 +70,8 @@ namespace rollnip
       unsigned int nip_cells;
       /// Width of the central over the edge nip cell (>= 1).
       double nip_grading;
+      /// Halvings of the fitted mesh's cells about the contact edge.
+      unsigned int edge_refinements = 0;
       /// Set by drivers, not the .prm: explicit coarse cell widths in theta
       /// [rad] (summing to the sector angle) instead of cells and grading.
       std::vector<double> circumferential_steps;

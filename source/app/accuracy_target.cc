@@ -181,12 +181,25 @@ namespace rollnip
     /// each quantity of the default scene's nips (theta0 = 4, 8, 12 deg)
     /// extrapolated at order 1 from levels 2 and 1, its estimate from
     /// level 0 (extrapolate_first_order()), rounded up; it falls at the
-    /// element's extrapolated_order() per level. Measured for P: Q1-P0
-    /// 1.5e-3, 2.8e-4, 1.1e-4, 3.7e-5 at levels 2 to 5; Q2-P1 5.6e-4,
-    /// 1.3e-4, 2.9e-5 at levels 2 to 4.
+    /// element's extrapolated_order() per level. Q2-P1 with
+    /// extrapolated_edge_refinements (the edge's first-order error gone,
+    /// doc/accuracy.md, "Refinement at the contact edge"). Measured for P:
+    /// Q1-P0 1.5e-3, 2.8e-4, 1.1e-4, 3.7e-5 at levels 2 to 5; Q2-P1
+    /// 6.2e-5 at level 2.
     constexpr double extrapolated_level2_error[2][NipQuantity::n_quantities] = {
       {1e-6, 1.5e-3, 1.3e-3, 5.5e-4, 1.6e-3, 1e-3, 2.3e-3, 1e-3}, // Q1-P0
-      {1e-6, 6e-4, 3e-4, 1.2e-4, 1e-3, 5e-4, 3.5e-4, 9e-4}};      // Q2-P1
+      {1e-6, 7e-5, 2e-5, 1e-5, 6e-4, 6e-5, 2.5e-4, 6e-4}};        // Q2-P1
+    /// ... and of Q2-P1 on the halved coarse mesh, with the same edge
+    /// refinements. Measured for P: 2.9e-4 at level 2, 3.9e-5 at level 3.
+    constexpr double
+      halved_extrapolated_level2_error[NipQuantity::n_quantities] =
+        {1e-6, 3e-4, 3e-4, 1.5e-5, 9e-4, 3e-4, 3e-4, 5.5e-3};
+
+    /// The edge refinements of the extrapolated Q2-P1 candidates: with 3
+    /// to 6 the extrapolated P is the same to 3e-6 of itself; without,
+    /// the edge's first-order error term shows at 12 deg, where the
+    /// extrapolated P of levels 0 to 2 was 5e-4 off (doc/accuracy.md).
+    constexpr unsigned int extrapolated_edge_refinements = 4;
 
     /// DoFs of the default scene's roll at level 0 per element, and of
     /// Q2-P1 on its halved coarse mesh (4 x 11 cells).
@@ -239,6 +252,10 @@ namespace rollnip
       return element_name(c.element) + " at mesh level " +
              std::to_string(c.level) +
              (c.halved_mesh ? " of the halved coarse mesh" : "") +
+             (c.edge_refinements
+                ? " with " + std::to_string(c.edge_refinements) +
+                    " edge refinements"
+                : "") +
              (c.extrapolated ? " extrapolated at order 1 from levels " +
                                  std::to_string(c.level - 2) + " to " +
                                  std::to_string(c.level)
@@ -346,6 +363,8 @@ namespace rollnip
       p.mesh.global_refinements   = candidate.level;
       if (candidate.halved_mesh)
         halve_coarse_mesh(p.mesh);
+      if (p.nip_fitted_mesh())
+        p.mesh.edge_refinements = candidate.edge_refinements;
       p.accuracy.error_estimate = true;
       // P or u0 met to a hundredth of the target, not to a millionth:
       // the last control iteration moves no number by more than that,
@@ -434,7 +453,7 @@ namespace rollnip
     {
       write_atomically(dir + "/accuracy_target.csv", [&](std::ostream &out) {
         out << "element,level,coarse_mesh,answer,dofs,nips,wall_time_s,"
-               "target_relative";
+               "target_relative,edge_refinements";
         for (const auto q : target.quantities)
           out << ",estimated_relative_error_" << NipQuantity::key(q);
         out << ",met\n" << std::setprecision(6);
@@ -444,7 +463,7 @@ namespace rollnip
                 << ',' << (a.candidate.halved_mesh ? "halved" : "file") << ','
                 << (a.candidate.extrapolated ? "extrapolated" : "solved") << ','
                 << a.n_dofs << ',' << a.n_nips << ',' << a.seconds << ','
-                << target.target;
+                << target.target << ',' << a.candidate.edge_refinements;
             for (const double e : a.estimate)
               out << ',' << e;
             out << ',' << (a.met ? "yes" : "no") << '\n';
@@ -557,7 +576,8 @@ namespace rollnip
       c.push_back({Parameters::Element::q1_p0, level, cost(0, level)});
     for (unsigned int level = 0; level <= 3; ++level)
       c.push_back({Parameters::Element::q2_p1, level, cost(1, level)});
-    // Extrapolated (theta0 prescribed): the three levels, no companion.
+    // Extrapolated (theta0 prescribed): the three levels, no companion
+    // (the edge refinements add under 400 DoFs to each level).
     for (unsigned int e = 0; e < 2; ++e)
       for (unsigned int level = 2; level <= (e == 0 ? 5u : 4u); ++level)
         c.push_back(
@@ -565,7 +585,15 @@ namespace rollnip
            level,
            level0_dofs[e] * 21 * std::pow(4., level - 2.),
            false,
-           true});
+           true,
+           e == 0 ? 0u : extrapolated_edge_refinements});
+    for (unsigned int level = 2; level <= 3; ++level)
+      c.push_back({Parameters::Element::q2_p1,
+                   level,
+                   halved_level0_dofs * 21 * std::pow(4., level - 2.),
+                   true,
+                   true,
+                   extrapolated_edge_refinements});
     // Its level 0 would need the finer companion and gain nothing.
     for (unsigned int level = 1; level <= 3; ++level)
       c.push_back({Parameters::Element::q2_p1,
@@ -586,8 +614,10 @@ namespace rollnip
   {
     if (candidate.extrapolated)
       return mode == Parameters::ContactMode::nip_angle
-               ? extrapolated_level2_error[element_index(candidate.element)]
-                                          [q] *
+               ? (candidate.halved_mesh
+                    ? halved_extrapolated_level2_error[q]
+                    : extrapolated_level2_error[element_index(
+                        candidate.element)][q]) *
                    std::pow(2.,
                             extrapolated_order(candidate.element) *
                               (2. - candidate.level))

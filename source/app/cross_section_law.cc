@@ -73,6 +73,7 @@ namespace rollnip
         put(out, prefix + "nip_fitting", static_cast<int>(m.nip_fitting));
         put(out, prefix + "nip_cells", m.nip_cells);
         put(out, prefix + "nip_grading", m.nip_grading);
+        put(out, prefix + "edge_refinements", m.edge_refinements);
         put_list(out, prefix + "C1", material.layer_C1);
         put_list(out, prefix + "C2", material.layer_C2);
         put_list(out, prefix + "layers", material.layer_thicknesses);

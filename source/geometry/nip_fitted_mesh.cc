@@ -217,6 +217,21 @@ namespace rollnip
       }
     triangulation.copy_triangulation(coarse);
     triangulation.refine_global(m.global_refinements);
+    // The cells about the contact edge, halved again and again: the
+    // displacement there is singular (the pressure's square root), and the
+    // size of the cells at the edge sets the first-order error of
+    // P(theta0) (doc/accuracy.md, "Refinement at the contact edge"). Done
+    // in logical coordinates, so the levels stay nested.
+    const Point<dim> edge(1., double(n_nip_cells) / n_cells);
+    for (unsigned int k = 0; k < m.edge_refinements; ++k)
+      {
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const unsigned int v : cell->vertex_indices())
+              if (cell->vertex(v).distance(edge) < 1e-12)
+                cell->set_refine_flag();
+        triangulation.execute_coarsening_and_refinement();
+      }
     logical = triangulation.get_vertices();
 
     fit(triangulation, theta0);

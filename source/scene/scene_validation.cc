@@ -115,6 +115,14 @@ namespace rollnip
                                  "Adaptive grading passes both move the "
                                  "cells: choose one"));
         }
+      AssertThrow(mesh.edge_refinements == 0 || roll.nip_fitted_mesh(),
+                  ExcMessage(E +
+                             "Edge refinements needs the nip-fitted "
+                             "mesh (a contact scene, " +
+                             E +
+                             "Source = builtin, Nip fitting not off): "
+                             "on other meshes the contact edge is not a "
+                             "vertex"));
       if (roll.nip_fitted_mesh())
         AssertThrow(mesh.nip_cells + 2 <= mesh.circumferential_cells,
                     ExcMessage(E + "Nip cells (" +

@@ -20,13 +20,16 @@
 #    1 % + 1.5e-3 (the reference theta0's 4.1e-4 times dlogP/dlogtheta0,
 #    about 3.5);
 #  - nip-angle control at theta0 = 8 deg, Target = 0.1 % on P: met by P
-#    extrapolated at order 1 from three levels (accuracy_target_values.csv),
+#    extrapolated at order 1 from three levels of Q2-P1 on the halved
+#    coarse mesh with 4 edge refinements (accuracy_target_values.csv),
 #    within 0.1 % (+ 1.4e-5) of the reference at that theta0 from the
 #    other element family: Q1-P0 at levels 3 to 5 extrapolated at orders
 #    1 and 2, P = 10.5761461 N/mm, which Q2-P1 at levels 2 to 4
 #    extrapolated the same way matches to 8.7e-6
 #    (benchmarks/nip_angle_reference.py); the level-2 run's own P, in
-#    nip_characteristic.csv, is 3.3e-3 off;
+#    nip_characteristic.csv, is 1.8e-4 off;
+#  - the same at Target = 0.01 %: Q2-P1 on the file's mesh with 4 edge
+#    refinements, levels 0 to 2 extrapolated, within 0.01 % (+ 1.4e-5);
 #  - a target no candidate is predicted to reach in the allowed levels is
 #    not tried here (it would take minutes); its refusal path is the same
 #    exit code as a failed sweep.
@@ -118,18 +121,32 @@ P=$(csv_value angle/nip_characteristic.csv P_N_per_mm 1)
 check_rel_close "P (nip angle, target 1 %)" "$P" 20.02673146 1.15e-2
 
 run angle_fine "nip angle" 8 "0.1 %" "P"
-grep -q "met with Q2-P1 at mesh level 2 extrapolated at order 1 from levels 0 to 2 after 1 run" \
+grep -q "met with Q2-P1 at mesh level 2 of the halved coarse mesh with 4 edge refinements extrapolated at order 1 from levels 0 to 2 after 1 run" \
   angle_fine.out ||
-  fail "angle_fine: not met by Q2-P1 extrapolated from levels 0 to 2 in one run"
+  fail "angle_fine: not met by Q2-P1 on the halved mesh with edge refinements extrapolated from levels 0 to 2 in one run"
 [ "$(tail -n 1 angle_fine/accuracy_target.csv | cut -d, -f4)" = extrapolated ] ||
   fail "angle_fine: accuracy_target.csv does not say the answer is extrapolated"
+[ "$(csv_value angle_fine/accuracy_target.csv edge_refinements 1)" = 4 ] ||
+  fail "angle_fine: accuracy_target.csv does not give the 4 edge refinements"
 P=$(csv_value angle_fine/accuracy_target_values.csv P_N_per_mm 1)
-check_rel_close "P (nip angle 8 deg, target 0.1 %, extrapolated)" "$P" 10.5761461 1.014e-3
+check_rel_close "P (nip angle 8 deg, target 0.1 %, extrapolated; 2.1e-5 off)" "$P" 10.5761461 1.014e-3
 est=$(csv_value angle_fine/accuracy_target_values.csv P_err_N_per_mm 1)
 check_less "its estimated error [N/mm]" "$est" "$(awk -v p="$P" 'BEGIN { print 1e-3 * p }')"
 [ -f angle_fine/extrapolation/level-0/nip_characteristic.csv ] &&
   [ -f angle_fine/extrapolation/level-1/nip_characteristic.csv ] ||
   fail "angle_fine: the coarser levels' files are not in extrapolation/"
-# The level-2 run alone is first-order accurate only.
+# The level-2 run itself: with the edge refinements 1.8e-4 off (3.3e-3
+# without them, on the file's mesh).
 P2=$(csv_value angle_fine/nip_characteristic.csv P_N_per_mm 1)
-check_rel_close "P of the level-2 run itself (first order, 3.3e-3 off)" "$P2" 10.5761461 4e-3
+check_rel_close "P of the level-2 run itself (1.8e-4 off)" "$P2" 10.5761461 3e-4
+
+# 0.01 %: Q2-P1 on the file's mesh with the edge refinements, levels 0 to
+# 2 extrapolated (2.4e-5 off).
+run angle_finest "nip angle" 8 "0.01 %" "P"
+grep -q "met with Q2-P1 at mesh level 2 with 4 edge refinements extrapolated at order 1 from levels 0 to 2 after 1 run" \
+  angle_finest.out ||
+  fail "angle_finest: not met by Q2-P1 with edge refinements extrapolated from levels 0 to 2 in one run"
+P=$(csv_value angle_finest/accuracy_target_values.csv P_N_per_mm 1)
+check_rel_close "P (nip angle 8 deg, target 0.01 %, extrapolated; 2.4e-5 off)" "$P" 10.5761461 1.14e-4
+est=$(csv_value angle_finest/accuracy_target_values.csv P_err_N_per_mm 1)
+check_less "its estimated error [N/mm]" "$est" "$(awk -v p="$P" 'BEGIN { print 1e-4 * p }')"

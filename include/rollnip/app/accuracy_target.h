@@ -53,6 +53,9 @@ namespace rollnip
     /// the level below that (extrapolate_first_order()); the three levels
     /// are solved without the error estimate's companion.
     bool extrapolated = false;
+    /// Halvings of the cells about the contact edge beyond the level
+    /// (Mesh/Edge refinements, on the nip-fitted mesh).
+    unsigned int edge_refinements = 0;
   };
 
   /**
@@ -75,8 +78,9 @@ namespace rollnip
   /// DoFs of Q1-P0 at the same level; the companion of a level-0 run is
   /// the finer level 1, so Q1-P0 at level 1 costs about as much as at
   /// level 0); and, for theta0 prescribed, the extrapolated Q1-P0 at
-  /// levels 2 to 5 and Q2-P1 at levels 2 to 4, which cost the DoFs of
-  /// their three levels.
+  /// levels 2 to 5, Q2-P1 at levels 2 to 4 and Q2-P1 on the halved coarse
+  /// mesh at levels 2 and 3, the last two with the cells about the contact
+  /// edge refined further, which cost the DoFs of their three levels.
   std::vector<AccuracyCandidate>
   accuracy_candidates();
 
