@@ -182,7 +182,7 @@ namespace rollnip
     /// extrapolated at order 1 from levels 2 and 1, its estimate from
     /// level 0 (extrapolate_first_order()), rounded up; it falls at the
     /// element's extrapolated_order() per level. Q2-P1 with
-    /// extrapolated_edge_refinements (the edge's first-order error gone,
+    /// q2_edge_refinements (the edge's first-order error gone,
     /// doc/accuracy.md, "Refinement at the contact edge"). Measured for P:
     /// Q1-P0 1.5e-3, 2.8e-4, 1.1e-4, 3.7e-5 at levels 2 to 5; Q2-P1
     /// 6.2e-5 at level 2.
@@ -195,11 +195,34 @@ namespace rollnip
       halved_extrapolated_level2_error[NipQuantity::n_quantities] =
         {1e-6, 3e-4, 3e-4, 1.5e-5, 9e-4, 3e-4, 3e-4, 5.5e-3};
 
-    /// The edge refinements of the extrapolated Q2-P1 candidates: with 3
-    /// to 6 the extrapolated P is the same to 3e-6 of itself; without,
-    /// the edge's first-order error term shows at 12 deg, where the
-    /// extrapolated P of levels 0 to 2 was 5e-4 off (doc/accuracy.md).
-    constexpr unsigned int extrapolated_edge_refinements = 4;
+    /// The edge refinements of the Q2-P1 candidates that use them: the
+    /// extrapolated ones (theta0 prescribed; with 3 to 6 the extrapolated
+    /// P is the same to 3e-6 of itself; without, the edge's first-order
+    /// error term shows at 12 deg, where the extrapolated P of levels 0 to
+    /// 2 was 5e-4 off) and the edge-refined ones under load and
+    /// indentation control (b 20 times closer at level 0; with 4 its
+    /// error keeps one sign over the default scene's nips, where with 5
+    /// or 6 the opposite term under a small nip shows; doc/accuracy.md,
+    /// "Refinement at the contact edge").
+    constexpr unsigned int q2_edge_refinements = 4;
+
+    /// With P or u0 prescribed, the largest relative error or estimate of
+    /// each quantity of the default scene's nips (u0 = 0.5-3 mm) with
+    /// Q2-P1 and q2_edge_refinements at level 0 on the file's mesh,
+    /// against the references of doc/accuracy.md ("Refinement at the
+    /// contact edge"), rounded up; per control mode: u0 and P prescribed.
+    /// Measured: b 2.7e-4 and 3.7e-4 (against 6.3e-3 without edge
+    /// refinements), theta0 2.8e-4 and 3.7e-4, P 2.6e-4 (estimate 2.7e-4)
+    /// under indentation, u0 1.8e-4 (estimate 1.9e-4) under load. With
+    /// theta0 prescribed their estimate is not reliable at a small nip:
+    /// not candidates there.
+    constexpr double edge_refined_level0_error[2][NipQuantity::n_quantities] = {
+      {3e-4, 3e-4, 2e-4, 3e-4, 5e-3, 5.5e-4, 2e-3, 3.5e-3}, // indentation
+      {4e-4, 3e-4, 2e-4, 4e-4, 5e-3, 4e-4, 2e-3, 3.5e-3}};  // load
+
+    /// DoFs the edge refinements add to Q2-P1 at any level of the
+    /// default scene (86 per halving).
+    constexpr double q2_edge_refinement_dofs = 344;
 
     /// DoFs of the default scene's roll at level 0 per element, and of
     /// Q2-P1 on its halved coarse mesh (4 x 11 cells).
@@ -424,6 +447,11 @@ namespace rollnip
         {
           if (tried[c] || candidates[c].cost <= last_cost)
             continue;
+          // Without the nip-fitted mesh an edge-refined run would be the
+          // plain one again.
+          if (candidates[c].edge_refinements > 0 &&
+              !candidates[c].extrapolated && !parameters.nip_fitted_mesh())
+            continue;
           // The largest predicted error over the target quantities, in
           // units of the target.
           double worst = 0;
@@ -576,6 +604,16 @@ namespace rollnip
       c.push_back({Parameters::Element::q1_p0, level, cost(0, level)});
     for (unsigned int level = 0; level <= 3; ++level)
       c.push_back({Parameters::Element::q2_p1, level, cost(1, level)});
+    // With the edge refinements (P or u0 prescribed): their DoFs at the
+    // run's level and at its companion's.
+    for (unsigned int level = 0; level <= 3; ++level)
+      c.push_back({Parameters::Element::q2_p1,
+                   level,
+                   cost(1, level) +
+                     q2_edge_refinement_dofs * (1 + companion_cost_per_dof),
+                   false,
+                   false,
+                   q2_edge_refinements});
     // Extrapolated (theta0 prescribed): the three levels, no companion
     // (the edge refinements add under 400 DoFs to each level).
     for (unsigned int e = 0; e < 2; ++e)
@@ -586,14 +624,14 @@ namespace rollnip
            level0_dofs[e] * 21 * std::pow(4., level - 2.),
            false,
            true,
-           e == 0 ? 0u : extrapolated_edge_refinements});
+           e == 0 ? 0u : q2_edge_refinements});
     for (unsigned int level = 2; level <= 3; ++level)
       c.push_back({Parameters::Element::q2_p1,
                    level,
                    halved_level0_dofs * 21 * std::pow(4., level - 2.),
                    true,
                    true,
-                   extrapolated_edge_refinements});
+                   q2_edge_refinements});
     // Its level 0 would need the finer companion and gain nothing.
     for (unsigned int level = 1; level <= 3; ++level)
       c.push_back({Parameters::Element::q2_p1,
@@ -623,6 +661,12 @@ namespace rollnip
                               (2. - candidate.level))
                : std::numeric_limits<double>::infinity();
     const double p = error_order(candidate.element, q, mode);
+    if (candidate.edge_refinements > 0)
+      return mode == Parameters::ContactMode::nip_angle
+               ? std::numeric_limits<double>::infinity()
+               : edge_refined_level0_error
+                     [mode == Parameters::ContactMode::indentation ? 0 : 1][q] *
+                   std::pow(2., -p * candidate.level);
     if (candidate.halved_mesh)
       {
         const unsigned int m = mode == Parameters::ContactMode::indentation ? 0

@@ -25,6 +25,11 @@
 //    (check_nip_angle()), and of the 4 estimates of P and b an accuracy
 //    target extrapolates from three levels; P extrapolated at order 1
 //    from Q1-P0's levels 1 and 2 within 1e-4 of it;
+//  - Accuracy/Target's edge-refined candidate (Q2-P1 at level 0 with 4
+//    edge refinements) under load control at the reference's P: the same
+//    check of the estimates of u0 and b, b against a reference made with
+//    edge refinements by both element families, and b within 4e-4 of it
+//    (check_edge_refined_load());
 //  - Q1-P0 on the default mesh (8 x 18 coarse cells, nip-fitted) is within
 //    0.03 % of the reference in P at level 2 on both scenes (the issue's
 //    target; measured 0.027 % on run 30, 0.028 % on the layered cover),
@@ -38,6 +43,8 @@
 #include "test_tools.h"
 
 #include <algorithm>
+#include <iomanip>
+#include <sstream>
 #include <vector>
 
 using namespace rollnip;
@@ -227,6 +234,67 @@ namespace
     {1, 6.32893475, 7.32682612, 6.32899558, 7.33182963},
     {2, 20.0267193, 11.5259571, 20.0271314, 11.5308388},
     {3, 41.1418582, 14.945881, 41.1428319, 14.9496501}};
+
+  /// b [mm] at the run-30 reference's nips (u0 = 0.5, 1, 2, 3 mm) from
+  /// the edge (doc/accuracy.md, "Refinement at the contact edge"): Q2-P1
+  /// with 6 edge refinements at levels 2 and 3 extrapolated at order 1,
+  /// and Q1-P0 with 4 at levels 3 and 4 extrapolated the same way, whose
+  /// difference bounds the reference's own error (the level-3 b above
+  /// is 2.6e-4 to 6.5e-4 too large: it converges at first order).
+  const double b_edge_q2[4] = {4.626883, 7.322041, 11.521238, 14.942063};
+  const double b_edge_q1[4] = {4.626948, 7.322330, 11.521322, 14.942003};
+
+  /// Accuracy/Target's edge-refined candidate under load control: Q2-P1
+  /// at level 0 with 4 edge refinements at the reference's P. Each
+  /// estimate of u0 and b as in check_scene() (u0's reference is the
+  /// prescribed u0, within the P reference's uncertainty), and b within
+  /// 4e-4 of the reference (measured 3.7e-4; 6.3e-3 at the same level
+  /// without the edge refinements). Under indentation control the same
+  /// run's b estimate at u0 = 3 mm is 0.26 of an error of 3.8e-5, levels
+  /// 0 and 1 not yet in one regime there: reported in doc/accuracy.md,
+  /// not checked here.
+  void
+  check_edge_refined_load(testing::Checker &checker, Effectivity &effectivity)
+  {
+    std::ostringstream values;
+    values << std::setprecision(12);
+    for (const auto &r : run30)
+      values << (&r == &run30.front() ? "" : ", ") << r.P3;
+    std::vector<NipRow> rows;
+    const int           code =
+      run_nip_study(scene("Q2-P1",
+                          0,
+                          values.str(),
+                          "subsection Mesh\n set Edge refinements = 4\nend\n",
+                          "load"),
+                    MPI_COMM_WORLD,
+                    &rows);
+    checker.check(code == 0 && rows.size() == run30.size(),
+                  "load, Q2-P1, level 0, 4 edge refinements: all nips "
+                  "converge");
+    for (unsigned int i = 0; i < std::min(rows.size(), run30.size()); ++i)
+      {
+        const Reference &r   = run30[i];
+        const NipRow    &n   = rows[i];
+        const double     u0  = n.nonlinear.indentation;
+        const double     b   = n.nonlinear.half_chord;
+        const double     e_u = u0 / r.u0 - 1, e_b = b / b_edge_q2[i] - 1;
+        const double     u_u   = std::abs(r.P2 / r.P3 - 1);
+        const double     u_b   = std::abs(b_edge_q1[i] / b_edge_q2[i] - 1);
+        const double     est_u = n.error.relative(NipQuantity::indentation, u0);
+        const double     est_b = n.error.relative(NipQuantity::half_chord, b);
+        const bool       u_ok  = effectivity.check(est_u, e_u, u_u);
+        const bool       b_ok  = effectivity.check(est_b, e_b, u_b);
+        checker.check(n.error.available && u_ok && b_ok &&
+                        std::abs(e_b) < 4e-4 + u_b,
+                      "load, Q2-P1, level 0, 4 edge refinements, P = " +
+                        testing::num(r.P3) + " N/mm: u0 error " +
+                        testing::num(e_u) + ", estimate " +
+                        testing::num(est_u) + "; b error " + testing::num(e_b) +
+                        " (within 4e-4 + " + testing::num(u_b) +
+                        "), estimate " + testing::num(est_b));
+      }
+  }
 
   /// A 3.5 mm top layer five times stiffer than its 10 mm base.
   const std::string layered_cover =
@@ -450,6 +518,7 @@ main(int argc, char **argv)
     }
 
   check_nip_angle(checker, effectivity);
+  check_edge_refined_load(checker, effectivity);
 
   checker.check(effectivity.n_too_high * 10 <= effectivity.n_checked,
                 "estimates of P and b more than 3 times the error (plus the "

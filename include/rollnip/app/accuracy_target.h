@@ -72,7 +72,10 @@ namespace rollnip
   halve_coarse_mesh(Parameters::Mesh &mesh);
 
   /// The candidates, cheapest first: Q1-P0 at levels 0 to 4, Q2-P1 at
-  /// levels 0 to 3 and Q2-P1 on the halved coarse mesh at levels 1 to 3,
+  /// levels 0 to 3 with and without the cells about the contact edge
+  /// refined further (the former for P or u0 prescribed: b converges from
+  /// an error 20 times smaller) and Q2-P1 on the halved coarse mesh at
+  /// levels 1 to 3,
   /// ordered by the DoFs on the builtin mesh of the run
   /// and of its error estimate's companion (Q2-P1 has about 3.5 times the
   /// DoFs of Q1-P0 at the same level; the companion of a level-0 run is
@@ -87,7 +90,8 @@ namespace rollnip
   /// The predicted largest relative error of quantity @p q of the default
   /// scene's nips for @p candidate under @p mode, from the measured
   /// level-0 errors and the orders of error_order() (doc/accuracy.md);
-  /// infinite for an extrapolated candidate unless theta0 is prescribed.
+  /// infinite for an extrapolated candidate unless theta0 is prescribed,
+  /// and for an edge-refined one that is not extrapolated if it is.
   double
   predicted_error(const AccuracyCandidate      &candidate,
                   const NipQuantity::Index      q,
