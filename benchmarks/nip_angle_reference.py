@@ -23,10 +23,13 @@ measures each answer (the extrapolated one where the target chose
 extrapolation) against the reference of the element family it did not
 use.
 
-Usage: python3 benchmarks/nip_angle_reference.py [--target]
+Usage: [ROLLNIP_BASE=parameters/other.prm] python3
+       benchmarks/nip_angle_reference.py [--target]
+ROLLNIP_BASE: another scene, e.g. parameters/layered_cover.prm (its
+Contact/Mode is replaced by nip angle).
 Uses build/rollnip or $ROLLNIP_BIN (about 25 min on one core, 10 more
 with --target). Prints Markdown tables and writes
-benchmarks/results/nip_angle_reference.csv.
+benchmarks/results/nip_angle_reference[-SCENE].csv.
 """
 
 import csv
@@ -39,7 +42,11 @@ import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ROLLNIP = os.environ.get("ROLLNIP_BIN", os.path.join(ROOT, "build", "rollnip"))
-BASE = os.path.join(ROOT, "parameters", "batra1980.prm")
+# The scene: parameters/batra1980.prm, or the parameter file in
+# ROLLNIP_BASE (run with Mode = nip angle at THETA0).
+BASE = os.environ.get("ROLLNIP_BASE",
+                      os.path.join(ROOT, "parameters", "batra1980.prm"))
+SCENE = os.path.splitext(os.path.basename(BASE))[0]
 THETA0 = [4, 8, 12]  # deg
 LEVELS = {"Q1-P0": range(6), "Q2-P1": range(5)}
 # The order at which each element's order-1 extrapolation converges
@@ -63,6 +70,7 @@ subsection Discretization
   set Element = {element}
 end
 subsection Contact
+  set Mode = nip angle
   set Values = {", ".join(str(t) for t in THETA0)}
   set Compare with linear theory = false
   set Control tolerance = 1e-9
@@ -98,6 +106,7 @@ def targets(reference):
                     f.write(base.read())
                     f.write(f"""
 subsection Contact
+  set Mode = nip angle
   set Values = {", ".join(str(t) for t in THETA0)}
   set Compare with linear theory = false
 end
@@ -216,7 +225,9 @@ def main():
 
     os.makedirs(os.path.join(ROOT, "benchmarks", "results"), exist_ok=True)
     path = os.path.join(ROOT, "benchmarks", "results",
-                        "nip_angle_reference.csv")
+                        "nip_angle_reference"
+                        + ("" if SCENE == "batra1980" else "-" + SCENE)
+                        + ".csv")
     with open(path, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[-1].keys()))
         w.writeheader()
