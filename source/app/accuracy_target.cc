@@ -4,6 +4,7 @@
 #include <rollnip/app/accuracy_target.h>
 #include <rollnip/app/nip_study.h>
 #include <rollnip/output/atomic_file.h>
+#include <rollnip/output/silence_cerr.h>
 
 #include <algorithm>
 #include <cmath>
@@ -355,8 +356,25 @@ namespace rollnip
                                std::to_string(level - k);
           q.output.write_vtu = false;
           below.emplace_back();
-          if (const int code = run_nip_study(q, communicator, &below.back()))
+          Timer timer;
+          int   code = 0;
+          {
+            // The coarser levels only feed the extrapolation: their log
+            // would bury the answer's on the screen (errors still go to
+            // std::cerr, the numbers to their files).
+            SilenceStream quiet(std::cout);
+            code = run_nip_study(q, communicator, &below.back());
+          }
+          if (code)
             return code;
+          if (Utilities::MPI::this_mpi_process(communicator) == 0 &&
+              !below.back().empty())
+            std::cout << "Mesh level " << level - k << " ("
+                      << below.back().front().n_dofs
+                      << " DoFs): " << below.back().size() << " nip(s) in "
+                      << std::fixed << std::setprecision(2) << timer.wall_time()
+                      << " s, files in " << q.output.directory
+                      << std::defaultfloat << std::endl;
         }
       if (const int code = run_nip_study(p, communicator, &rows))
         return code;
