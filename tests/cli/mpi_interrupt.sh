@@ -5,8 +5,10 @@
 #     the one line of one process (by SIGTERM), and nip_characteristic.csv
 #     and nip_report.csv with one row per converged nip.
 #  2. Two SIGTERMs 0.2 s apart to mpirun (it then exits at once and the
-#     ranks' line may be lost): the tables, written after every nip, are
-#     still whole and list the nips done before the first signal.
+#     ranks' line may be lost; the ranks may go on for a few nips before
+#     they stop, and are waited for): the tables, written after every nip,
+#     are still whole and list at least the nips done before the first
+#     signal.
 #  3. Two SIGINTs 0.2 s apart to one process: the same.
 #
 # Usage: bash mpi_interrupt.sh ROLLNIP MPIEXEC LOAD_PRM
@@ -52,6 +54,27 @@ check_tables()
   echo "$n"
 }
 
+# wait_for_ranks: after a second SIGTERM mpirun exits at once, and its
+# ranks may go on for a few nips in out/ before they stop; wait for every
+# rollnip process running in this directory to end (30 s, then SIGKILL),
+# so that the next case starts on an empty directory of its own.
+wait_for_ranks()
+{
+  local d left=""
+  for _ in $(seq 1 300); do
+    left=""
+    for d in /proc/[0-9]*; do
+      [ "$(cat "$d/comm" 2> /dev/null)" = rollnip ] &&
+        [ "$(readlink "$d/cwd" 2> /dev/null)" = "$PWD" ] &&
+        left="$left ${d#/proc/}"
+    done
+    [ -n "$left" ] || return 0
+    sleep 0.1
+  done
+  # shellcheck disable=SC2086
+  kill -KILL $left 2> /dev/null || true
+}
+
 # 1. One SIGINT to mpirun.
 start_until_nip2 "${mpi[@]}" "$rollnip"
 kill -INT "$pid"
@@ -75,6 +98,7 @@ converged="${BASH_REMATCH[3]}"
 rows="$(check_tables 1)"
 [ "$rows" -eq "$converged" ] || fail "the tables list $rows nips, the line $converged"
 pass "mpirun: stopped during nip $stopped of 30; both tables list the $rows converged nips"
+wait_for_ranks
 
 # 2. Two SIGTERMs to mpirun, 0.2 s apart; 3. two SIGINTs to one process.
 for launch in mpi single; do
@@ -91,6 +115,7 @@ for launch in mpi single; do
   rc=0
   wait "$pid" || rc=$?
   [ "$rc" -ne 0 ] || fail "$launch: exit code 0 after two signals"
+  wait_for_ranks
   rows="$(check_tables 1)"
   pass "$launch: two SIG$signal 0.2 s apart: exit code $rc, both tables whole with $rows converged nips"
 done
