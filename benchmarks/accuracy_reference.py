@@ -196,7 +196,7 @@ def half_chord_reference(tmp):
     """b at each u0 from Q2-P1 on the nip-fitted mesh with 6 edge
     refinements at levels 2 and 3, extrapolated at order 1: the
     reference's own b (level 3 without them) converges at first order
-    from the contact edge and is 2e-5 to 7e-5 too large (doc/accuracy.md,
+    from the contact edge and is 2.6e-4 to 6.5e-4 too large (doc/accuracy.md,
     "Refinement at the contact edge", where Q1-P0 agrees with it)."""
     fine = reference(tmp, [2, 3], ("half_chord_mm",),
                      (("Edge refinements", 6),))
