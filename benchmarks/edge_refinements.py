@@ -38,10 +38,12 @@ import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from nip_angle_reference import THETA0, write_prm  # noqa: E402
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ROLLNIP = os.environ.get("ROLLNIP_BIN", os.path.join(ROOT, "build", "rollnip"))
 BASE = os.path.join(ROOT, "parameters", "batra1980.prm")
-THETA0 = [4, 8, 12]  # deg
 # P [N/mm] at theta0 from benchmarks/nip_angle_reference.py, per family.
 REFERENCE = {"Q1-P0": {4: 1.8805032, 8: 10.5761461, 12: 41.7311353},
              "Q2-P1": {4: 1.8805088, 8: 10.5762384, 12: 41.7319318}}
@@ -60,29 +62,11 @@ def reference(element, t):
     return REFERENCE["Q1-P0" if element == "Q2-P1" else "Q2-P1"][t]
 
 
-def write_prm(path, out, extra):
-    with open(BASE) as base, open(path, "w") as f:
-        f.write(base.read())
-        f.write(f"""
-subsection Contact
-  set Values = {", ".join(str(t) for t in THETA0)}
-  set Compare with linear theory = false
-  set Control tolerance = 1e-9
-  set Conformity tolerance = 1e-9
-end
-subsection Output
-  set Directory = {out}
-  set Write VTU = false
-  set Print timing = false
-end
-{extra}""")
-
-
 def run(element, k, mesh, level, work):
     """P at each theta0 of one run: {theta0: P}."""
     name = f"{element}-{mesh}-k{k}-{level}"
     out = os.path.join(work, name)
-    write_prm(os.path.join(work, name + ".prm"), out, f"""
+    write_prm(os.path.join(work, name + ".prm"), out, base=BASE, extra=f"""
 subsection Mesh
   set Global refinements = {level}
   set Edge refinements   = {k}
@@ -112,7 +96,7 @@ def targets():
         with tempfile.TemporaryDirectory() as work:
             out = os.path.join(work, "out")
             prm = os.path.join(work, "target.prm")
-            write_prm(prm, out, f"""
+            write_prm(prm, out, base=BASE, extra=f"""
 subsection Accuracy
   set Target = {target}
   set Target quantities = P

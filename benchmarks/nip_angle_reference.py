@@ -56,32 +56,42 @@ QUANTITIES = [("P_N_per_mm", "P_err_N_per_mm", "P [N/mm]"),
               ("half_chord_mm", "half_chord_err_mm", "b [mm]")]
 
 
+def write_prm(path, out, extra, base=BASE, tight=True):
+    """The parameter file PATH: BASE at its nips THETA0 (Mode = nip angle)
+    without the linear companion, its files in OUT without VTU or timing
+    tables, then EXTRA; tight: Control and Conformity tolerance 1e-9."""
+    tolerances = """
+  set Control tolerance = 1e-9
+  set Conformity tolerance = 1e-9""" if tight else ""
+    with open(base) as b, open(path, "w") as f:
+        f.write(b.read())
+        f.write(f"""
+subsection Contact
+  set Mode = nip angle
+  set Values = {", ".join(str(t) for t in THETA0)}
+  set Compare with linear theory = false{tolerances}
+end
+subsection Output
+  set Directory = {out}
+  set Write VTU = false
+  set Print timing = false
+end
+{extra}""")
+
+
 def run(element, level, work):
     """The nip characteristic of one run: {theta0: row}."""
     out = os.path.join(work, f"{element}-{level}")
     prm = os.path.join(work, f"{element}-{level}.prm")
-    with open(BASE) as base, open(prm, "w") as f:
-        f.write(base.read())
-        f.write(f"""
+    write_prm(prm, out, f"""
 subsection Mesh
   set Global refinements = {level}
 end
 subsection Discretization
   set Element = {element}
 end
-subsection Contact
-  set Mode = nip angle
-  set Values = {", ".join(str(t) for t in THETA0)}
-  set Compare with linear theory = false
-  set Control tolerance = 1e-9
-  set Conformity tolerance = 1e-9
-end
 subsection Accuracy
   set Error estimate = true
-end
-subsection Output
-  set Directory = {out}
-  set Write VTU = false
 end
 """)
     subprocess.run([ROLLNIP, prm], check=True, stdout=subprocess.DEVNULL)
@@ -102,24 +112,12 @@ def targets(reference):
             with tempfile.TemporaryDirectory() as work:
                 out = os.path.join(work, "out")
                 prm = os.path.join(work, "target.prm")
-                with open(BASE) as base, open(prm, "w") as f:
-                    f.write(base.read())
-                    f.write(f"""
-subsection Contact
-  set Mode = nip angle
-  set Values = {", ".join(str(t) for t in THETA0)}
-  set Compare with linear theory = false
-end
+                write_prm(prm, out, f"""
 subsection Accuracy
   set Target = {target}
   set Target quantities = P
 end
-subsection Output
-  set Directory = {out}
-  set Write VTU = false
-  set Print timing = false
-end
-""")
+""", tight=False)
                 r0 = resource.getrusage(resource.RUSAGE_CHILDREN)
                 p = subprocess.run([ROLLNIP, prm], env=env,
                                    capture_output=True, text=True)
