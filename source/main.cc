@@ -16,7 +16,6 @@
 #include <rollnip/rolling/rolling_parameters.h>
 #include <rollnip/run_errors.h>
 #include <rollnip/solvers/tolerance_floor.h>
-#include <rollnip/three_d/drawn_mesh.h>
 #include <rollnip/three_d/slice_run.h>
 
 #include <iostream>
@@ -159,11 +158,11 @@ main(int argc, char **argv)
       return run_face(parameters, face, communicator);
     if (three_d.enabled && !validate_only)
       return run_three_d(parameters, three_d, communicator);
-    if (three_d.enabled && validate_only && three_d::is_drawn_slice(parameters))
-      return three_d::validate_drawn_slice(parameters,
-                                           three_d.slice_thickness,
-                                           file,
-                                           root);
+    if (three_d.enabled && validate_only)
+      return three_d::validate_slice_body(parameters,
+                                          three_d,
+                                          file,
+                                          communicator);
     if (validate_only)
       return validate_mesh(parameters, file, communicator);
     if (!parameters.study.levels.empty())

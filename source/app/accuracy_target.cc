@@ -701,13 +701,54 @@ namespace rollnip
            std::pow(2., -p * candidate.level);
   }
 
+  namespace
+  {
+    /// @p requested with the quantity the contact mode prescribes (P under
+    /// load control, u0 under indentation, theta0 at a given nip angle;
+    /// its "error" is the control tolerance) replaced by the one the mode
+    /// answers in its place (u0, P, P), said on @p out.
+    Parameters::AccuracyTarget
+    answered_quantities(const Parameters::AccuracyTarget &requested,
+                        const Parameters::ContactMode     mode,
+                        ConditionalOStream               &out)
+    {
+      using Mode = Parameters::ContactMode;
+      const auto [given, found] =
+        mode == Mode::load
+          ? std::make_pair(NipQuantity::load, NipQuantity::indentation)
+        : mode == Mode::indentation
+          ? std::make_pair(NipQuantity::indentation, NipQuantity::load)
+          : std::make_pair(NipQuantity::theta0, NipQuantity::load);
+      Parameters::AccuracyTarget target = requested;
+      target.quantities.clear();
+      for (auto q : requested.quantities)
+        {
+          if (q == given)
+            {
+              out << "Accuracy target: " << NipQuantity::label(given)
+                  << " is prescribed in this contact mode; the target "
+                     "applies to "
+                  << NipQuantity::label(found) << " in its place" << std::endl;
+              q = found;
+            }
+          if (std::find(target.quantities.begin(),
+                        target.quantities.end(),
+                        q) == target.quantities.end())
+            target.quantities.push_back(q);
+        }
+      return target;
+    }
+  } // namespace
+
   int
   run_to_accuracy_target(const Parameters::AllParameters  &parameters,
-                         const Parameters::AccuracyTarget &target,
+                         const Parameters::AccuracyTarget &requested,
                          MPI_Comm                          communicator)
   {
     const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
-    ConditionalOStream   pcout(std::cout, root);
+    ConditionalOStream               pcout(std::cout, root);
+    const Parameters::AccuracyTarget target =
+      answered_quantities(requested, parameters.contact.mode, pcout);
     const auto           candidates = accuracy_candidates();
     std::vector<bool>    tried(candidates.size(), false);
     std::vector<double>  calibration(target.quantities.size(), 1.);

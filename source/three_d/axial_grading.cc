@@ -39,5 +39,17 @@ namespace rollnip
         return above - planes.begin() - 1;
       return above - planes.begin();
     }
+
+    std::pair<unsigned int, double>
+    hat_share(const std::vector<double> &planes, const double z)
+    {
+      const auto above = std::upper_bound(planes.begin(), planes.end(), z);
+      if (above == planes.begin())
+        return {0, 0.};
+      if (above == planes.end())
+        return {planes.size() - 1, 0.};
+      const unsigned int j = above - planes.begin() - 1;
+      return {j, (z - planes[j]) / (planes[j + 1] - planes[j])};
+    }
   } // namespace three_d
 } // namespace rollnip

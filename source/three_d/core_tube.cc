@@ -10,6 +10,7 @@
 #include <rollnip/three_d/axial_grading.h>
 #include <rollnip/three_d/core_deflection.h>
 #include <rollnip/three_d/core_tube.h>
+#include <rollnip/three_d/drawn_mesh.h>
 #include <rollnip/three_d/slice_body.h>
 
 #include <algorithm>
@@ -24,33 +25,149 @@ namespace rollnip
   {
     namespace
     {
-      /// The boundary id of a face of the (r, theta, z) box with the
-      /// centre @p c, before the box is bent into the tube.
+      /// The boundary id of a boundary face of the tube in place (Cartesian,
+      /// the roll axis along z), from where all its vertices lie: builtin
+      /// or gmsh vertices on the arcs to round-off (gmsh's about 1e-8 mm).
       types::boundary_id
-      tube_boundary_id(const Point<dim>                &c,
-                       const Parameters::AllParameters &parameters,
-                       const Parameters::ThreeD        &three_d)
+      tube_boundary_id(const TriaAccessor<dim - 1, dim, dim> &face,
+                       const Parameters::AllParameters       &parameters,
+                       const Parameters::ThreeD              &three_d)
       {
-        const auto  &g   = parameters.geometry;
-        const double tol = 1e-9 * (g.outer_radius + three_d.bearing_distance);
-        const auto   at  = [tol](const double a, const double b) {
-          return std::abs(a - b) < tol;
+        const auto  &g     = parameters.geometry;
+        const double tol   = 1e-6 * g.outer_radius;
+        const double alpha = g.sector_angle;
+        const auto   all   = [&face](const auto &on) {
+          for (unsigned int v = 0; v < face.n_vertices(); ++v)
+            if (!on(face.vertex(v)))
+              return false;
+          return true;
         };
-        if (at(c[2], 0.))
+        const auto plane_z = [&](const double z) {
+          return all(
+            [=](const Point<dim> &p) { return std::abs(p[2] - z) < tol; });
+        };
+        // The half-plane through the axis at the angle a.
+        const auto half_plane = [&](const double a) {
+          return all([=](const Point<dim> &p) {
+            return std::abs(p[1] * std::cos(a) - p[0] * std::sin(a)) < tol &&
+                   p[0] * std::cos(a) + p[1] * std::sin(a) > 0;
+          });
+        };
+        const auto arc = [&](const double r) {
+          return all([=](const Point<dim> &p) {
+            return std::abs(std::hypot(p[0], p[1]) - r) < tol;
+          });
+        };
+        if (plane_z(0.))
           return SliceIds::near_face;
-        if (at(c[2], three_d.bearing_distance))
+        if (plane_z(three_d.bearing_distance))
           return CoreIds::journal;
-        if (at(c[2], three_d.slice_thickness))
+        if (plane_z(three_d.slice_thickness))
           return SliceIds::far_face; // the cover's end: the core goes on
-        if (at(c[1], 0.))
+        if (half_plane(0.))
           return SliceIds::symmetry_edge;
-        if (at(c[1], g.sector_angle))
+        if (half_plane(alpha))
           return SliceIds::far_edge;
-        if (at(c[0], three_d.core_inner_radius))
+        if (arc(three_d.core_inner_radius))
           return CoreIds::bore;
-        if (at(c[0], g.outer_radius))
+        if (arc(g.outer_radius))
           return SliceIds::outer_arc;
+        AssertThrow(arc(g.inner_radius),
+                    ExcMessage("the elastic core's mesh has a boundary face "
+                               "on none of its surfaces, at " +
+                               Parameters::number(face.center()[0]) + ", " +
+                               Parameters::number(face.center()[1]) + ", " +
+                               Parameters::number(face.center()[2]) + " mm"));
         return CoreIds::bare_core;
+      }
+
+      /// The builtin body: the tube's @p radial steps from @p bore_radius
+      /// inside the cover's, the builtin circumferential cells, through
+      /// @p planes, in place.
+      void
+      builtin_core_body(const Parameters::AllParameters &parameters,
+                        const double                     bore_radius,
+                        const std::vector<double>       &radial,
+                        const unsigned int               level,
+                        const std::vector<double>       &planes,
+                        Triangulation<dim>              &body)
+      {
+        const auto         &g = parameters.geometry;
+        std::vector<double> axial;
+        for (unsigned int j = 1; j < planes.size(); ++j)
+          axial.push_back(planes[j] - planes[j - 1]);
+        auto       rad = radial;
+        const auto cover =
+          radial_steps(parameters, parameters.mesh.radial_grading);
+        rad.insert(rad.end(), cover.begin(), cover.end());
+        GridGenerator::subdivided_hyper_rectangle(
+          body,
+          {halved_steps(rad, level),
+           halved_steps(coarse_circumferential_steps(parameters), level),
+           axial},
+          Point<dim>(bore_radius, 0., 0.),
+          Point<dim>(g.outer_radius, g.sector_angle, planes.back()));
+        bend_into_cylinder(body);
+      }
+
+      /**
+       * The gmsh cross-section of Mesh/Mesh file (checked as in 2D) refined
+       * @p level times in its polar chart, with the tube's cross-section
+       * inside it: rings of the tube's @p radial steps (halved @p level
+       * times) through the bond's own vertices, so that tube and cover share
+       * every node at R1; extruded through @p planes.
+       */
+      void
+      gmsh_core_body(const Parameters::AllParameters &parameters,
+                     const std::vector<double>       &radial,
+                     const unsigned int               level,
+                     const std::vector<double>       &planes,
+                     Triangulation<dim>              &body)
+      {
+        const double     R1  = parameters.geometry.inner_radius;
+        const double     tol = 1e-6 * parameters.geometry.outer_radius;
+        Triangulation<2> cover;
+        refined_gmsh_cross_section(parameters, level, cover);
+        // The bond's vertices by angle, theta in (-pi/2, 3 pi/2] so that a
+        // vertex at theta = 180 deg a round-off below the axis stays last.
+        std::map<double, Point<2>> bond;
+        for (const auto &p : cover.get_vertices())
+          if (std::abs(p.norm() - R1) < tol)
+            {
+              double theta = std::atan2(p[1], p[0]);
+              if (theta < -numbers::PI / 2)
+                theta += 2 * numbers::PI;
+              bond[theta] = p;
+            }
+        std::vector<double> radii = {R1};
+        for (auto step = radial.rbegin(); step != radial.rend(); ++step)
+          for (const double s : halved_steps({*step}, level))
+            radii.push_back(radii.back() - s);
+        // Ring k at radii[n_rings - 1 - k], from the bore out to the bond.
+        const unsigned int    n_rings = radii.size();
+        const unsigned int    n       = bond.size();
+        std::vector<Point<2>> vertices;
+        for (unsigned int k = 0; k < n_rings; ++k)
+          for (const auto &[theta, p] : bond)
+            vertices.push_back(
+              k + 1 == n_rings ? p
+                               : radii[n_rings - 1 - k] *
+                                   Point<2>(std::cos(theta), std::sin(theta)));
+        std::vector<CellData<2>> cells;
+        for (unsigned int k = 0; k + 1 < n_rings; ++k)
+          for (unsigned int i = 0; i + 1 < n; ++i)
+            {
+              CellData<2> cell;
+              cell.vertices = {k * n + i,
+                               (k + 1) * n + i,
+                               k * n + i + 1,
+                               (k + 1) * n + i + 1};
+              cells.push_back(cell);
+            }
+        Triangulation<2> tube, both;
+        tube.create_triangulation(vertices, cells, SubCellData());
+        GridGenerator::merge_triangulations(cover, tube, both, 1e-9 * R1);
+        GridGenerator::extrude_triangulation(both, planes, body);
       }
     } // namespace
 
@@ -58,10 +175,12 @@ namespace rollnip
     check_elastic_core(const Parameters::AllParameters &parameters,
                        const Parameters::ThreeD        &three_d)
     {
-      AssertThrow(parameters.mesh.source == Parameters::MeshSource::builtin,
-                  ExcMessage("Three d/Core = elastic needs Mesh/Source = "
-                             "builtin (the tube is meshed with the builtin "
-                             "cross-section, not with a gmsh one)"));
+      AssertThrow(!is_drawn_slice(parameters),
+                  ExcMessage("Three d/Core = elastic needs a cross-section "
+                             "(builtin or gmsh) to mesh the tube under, but "
+                             "Mesh/Mesh file '" +
+                             parameters.mesh.mesh_file +
+                             "' holds a 3D mesh drawn without the tube"));
       const double R1 = parameters.geometry.inner_radius;
       AssertThrow(three_d.core_inner_radius > 0 &&
                     three_d.core_inner_radius < R1,
@@ -97,49 +216,38 @@ namespace rollnip
                         const unsigned int                         level,
                         parallel::distributed::Triangulation<dim> &tria)
     {
-      const auto  &g   = parameters.geometry;
-      const double L   = three_d.slice_thickness;
-      const double Lb  = three_d.bearing_distance;
-      const double Ri  = three_d.core_inner_radius;
-      auto         rad = std::vector<double>(2, (g.inner_radius - Ri) / 2.);
-      const auto   cover =
-        radial_steps(parameters, parameters.mesh.radial_grading);
-      rad.insert(rad.end(), cover.begin(), cover.end());
-      auto axial = axial_steps(L, three_d.layers, three_d.axial_grading);
+      const double R1 = parameters.geometry.inner_radius;
+      const double L  = three_d.slice_thickness;
+      const double Lb = three_d.bearing_distance;
+      const auto   radial =
+        std::vector<double>(2, (R1 - three_d.core_inner_radius) / 2.);
+      auto planes = axial_planes(L, three_d.layers, three_d.axial_grading);
       const unsigned int n_over =
         std::max<long>(1, std::lround((Lb - L) * three_d.layers / L));
-      axial.insert(axial.end(), n_over, (Lb - L) / n_over);
-      Triangulation<dim> box, tube;
-      GridGenerator::subdivided_hyper_rectangle(
-        box,
-        {halved_steps(rad, level),
-         halved_steps(coarse_circumferential_steps(parameters), level),
-         axial},
-        Point<dim>(Ri, 0., 0.),
-        Point<dim>(g.outer_radius, g.sector_angle, Lb));
+      for (unsigned int j = 1; j <= n_over; ++j)
+        planes.push_back(L + (Lb - L) * j / n_over);
+      Triangulation<dim> body, tube;
+      if (parameters.mesh.source == Parameters::MeshSource::gmsh)
+        gmsh_core_body(parameters, radial, level, planes, body);
+      else
+        builtin_core_body(
+          parameters, three_d.core_inner_radius, radial, level, planes, body);
       const std::vector<double> radii = layer_radii(parameters);
       std::set<Triangulation<dim>::active_cell_iterator> beyond_face;
-      for (const auto &cell : box.active_cell_iterators())
+      for (const auto &cell : body.active_cell_iterators())
         {
-          const Point<dim> c = cell->center();
-          if (c[0] > g.inner_radius && c[2] > L)
+          const double r = mean_vertex_radius(cell);
+          if (r > R1 && cell->center()[2] > L)
             beyond_face.insert(cell);
-          cell->set_material_id(c[0] < g.inner_radius
-                                  ? parameters.material.n_layers()
-                                  : layer_at_radius(radii, c[0]));
+          cell->set_material_id(r < R1 ? parameters.material.n_layers()
+                                       : layer_at_radius(radii, r));
         }
-      GridGenerator::create_triangulation_with_removed_cells(box,
+      GridGenerator::create_triangulation_with_removed_cells(body,
                                                              beyond_face,
                                                              tube);
       for (const auto &face : tube.active_face_iterators())
         if (face->at_boundary())
-          face->set_boundary_id(
-            tube_boundary_id(face->center(), parameters, three_d));
-      GridTools::transform(
-        [](const Point<dim> &p) {
-          return Point<dim>(p[0] * std::cos(p[1]), p[0] * std::sin(p[1]), p[2]);
-        },
-        tube);
+          face->set_boundary_id(tube_boundary_id(*face, parameters, three_d));
       tube.set_all_manifold_ids(0);
       tria.copy_triangulation(tube);
       Tensor<1, dim> axis;

@@ -67,9 +67,45 @@ namespace rollnip
                                  "hexahedron)"));
       }
 
-      /// The planes z = const of the vertices, checked to run from 0 to
-      /// @p length with every cell between two neighbouring ones.
+      /// Equidistant stations from 0 to @p length, twice as far apart as
+      /// the median length in z of the outer surface's faces: a hat over
+      /// about two cells, whose interpolant on the cells (which shares the
+      /// nodal forces) keeps its shape.
       std::vector<double>
+      axial_stations(const Triangulation<dim> &coarse, const double length)
+      {
+        std::vector<double> extents;
+        for (const auto &face : coarse.active_face_iterators())
+          if (face->at_boundary() && face->boundary_id() == SliceIds::outer_arc)
+            {
+              double low = face->vertex(0)[2], high = low;
+              for (const unsigned int v : face->vertex_indices())
+                {
+                  low  = std::min(low, face->vertex(v)[2]);
+                  high = std::max(high, face->vertex(v)[2]);
+                }
+              extents.push_back(high - low);
+            }
+        double spacing = length;
+        if (!extents.empty())
+          {
+            std::nth_element(extents.begin(),
+                             extents.begin() + extents.size() / 2,
+                             extents.end());
+            spacing = 2 * extents[extents.size() / 2];
+          }
+        const unsigned int n = std::max<long>(
+          1, std::lround(length / std::max(spacing, 1e-6 * length)));
+        std::vector<double> stations;
+        for (unsigned int j = 0; j <= n; ++j)
+          stations.push_back(length * j / n);
+        return stations;
+      }
+
+      /// The planes z = const of the vertices, checked to run from 0 to
+      /// @p length; the mesh's layers if every cell lies between two
+      /// neighbouring ones, else axial_stations().
+      AxialPlanes
       axial_layers(const Triangulation<dim> &coarse,
                    const double              length,
                    const std::string        &origin)
@@ -98,15 +134,10 @@ namespace rollnip
             std::set<unsigned int> on;
             for (const unsigned int v : cell->vertex_indices())
               on.insert(nearest_plane(planes, cell->vertex(v)[2]));
-            AssertThrow(on.size() == 2 && *on.rbegin() == *on.begin() + 1,
-                        ExcMessage(origin + ": the cell at " +
-                                   at(cell->center()) +
-                                   " does not lie between two neighbouring "
-                                   "planes z = const; the 3D body needs its "
-                                   "cells in layers along the axis (in gmsh: "
-                                   "Extrude with Layers)"));
+            if (on.size() != 2 || *on.rbegin() != *on.begin() + 1)
+              return {axial_stations(coarse, length), false};
           }
-        return planes;
+        return {planes, true};
       }
 
       /// Distance [mm] of @p x from the half-plane through the axis at
@@ -197,7 +228,7 @@ namespace rollnip
           {
             const Point<dim>   c = cell->center();
             const unsigned int j =
-              layer_at_radius(radii, std::hypot(c[0], c[1]));
+              layer_at_radius(radii, mean_vertex_radius(cell));
             for (const unsigned int v : cell->vertex_indices())
               {
                 const double r =
@@ -211,7 +242,7 @@ namespace rollnip
       }
     } // namespace
 
-    std::vector<double>
+    AxialPlanes
     read_drawn_slice(const Parameters::AllParameters &parameters,
                      const double                     length,
                      Triangulation<dim>              &coarse)
@@ -219,7 +250,7 @@ namespace rollnip
       const std::string &file   = parameters.mesh.mesh_file;
       const std::string  origin = "Mesh/Mesh file '" + file + "'";
       read_hexahedra(file, origin, coarse);
-      std::vector<double> planes = axial_layers(coarse, length, origin);
+      const AxialPlanes planes = axial_layers(coarse, length, origin);
       check_boundary_ids(parameters, coarse, length, origin);
       check_layer_interfaces(parameters, coarse, origin);
       return planes;
@@ -230,19 +261,6 @@ namespace rollnip
     {
       return parameters.mesh.source == Parameters::MeshSource::gmsh &&
              gmsh_mesh_dimension(parameters.mesh.mesh_file) == 3;
-    }
-
-    int
-    validate_drawn_slice(const Parameters::AllParameters &parameters,
-                         const double                     length,
-                         const std::string               &file,
-                         const bool                       root)
-    {
-      Triangulation<dim> coarse;
-      read_drawn_slice(parameters, length, coarse);
-      if (root)
-        std::cout << "rollnip: '" << file << "' is valid" << std::endl;
-      return 0;
     }
   } // namespace three_d
 } // namespace rollnip

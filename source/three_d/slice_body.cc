@@ -16,8 +16,10 @@
 #include <rollnip/three_d/axial_grading.h>
 #include <rollnip/three_d/core_tube.h>
 #include <rollnip/three_d/slice_body.h>
+#include <rollnip/three_d/slice_run.h>
 
 #include <cmath>
+#include <iostream>
 
 namespace rollnip
 {
@@ -40,6 +42,30 @@ namespace rollnip
         if (degree == 1)
           return std::make_unique<FE_DGP<dim>>(0);
         return std::make_unique<FE_DGPNonparametric<dim>>(1);
+      }
+
+      /// The body's mesh at @p level into @p triangulation: the cover
+      /// (make_slice_mesh()) or, with Core = elastic, the cover on the tube
+      /// (make_core_tube_mesh(), whose planes are the cover's layers).
+      AxialPlanes
+      make_body_mesh(const Parameters::AllParameters           &parameters,
+                     const Parameters::ThreeD                  &three_d,
+                     const unsigned int                         level,
+                     parallel::distributed::Triangulation<dim> &triangulation)
+      {
+        if (!three_d.elastic_core)
+          return make_slice_mesh(parameters,
+                                 level,
+                                 three_d.slice_thickness,
+                                 three_d.layers,
+                                 triangulation,
+                                 three_d.axial_grading);
+        check_elastic_core(parameters, three_d);
+        make_core_tube_mesh(parameters, three_d, level, triangulation);
+        return {axial_planes(three_d.slice_thickness,
+                             three_d.layers,
+                             three_d.axial_grading),
+                true};
       }
 
       Point<2>
@@ -194,21 +220,11 @@ namespace rollnip
       for (unsigned int j = 0; j < parameters.material.n_layers(); ++j)
         layer_laws.emplace_back(make_layer_law<dim>(parameters.material, j));
       if (three_d.elastic_core)
-        {
-          check_elastic_core(parameters, three_d);
-          layer_laws.emplace_back(make_core_law(three_d));
-          make_core_tube_mesh(parameters, three_d, level, triangulation);
-          layer_planes = axial_planes(three_d.slice_thickness,
-                                      three_d.layers,
-                                      three_d.axial_grading);
-        }
-      else
-        layer_planes = make_slice_mesh(parameters,
-                                       level,
-                                       three_d.slice_thickness,
-                                       three_d.layers,
-                                       triangulation,
-                                       three_d.axial_grading);
+        layer_laws.emplace_back(make_core_law(three_d));
+      const AxialPlanes planes =
+        make_body_mesh(parameters, three_d, level, triangulation);
+      layer_planes = planes.z;
+      layered      = planes.layered;
       if (iterative)
         for (const auto &cell_law : layer_laws)
           augmentation.push_back(cell_augmentation(*cell_law));
@@ -372,6 +388,35 @@ namespace rollnip
                    parameters.geometry.outer_radius * three_d.slice_thickness);
       residual_q = Utilities::MPI::sum(constraint_error, communicator) /
                    GridTools::volume(triangulation);
+    }
+
+    int
+    validate_slice_body(const Parameters::AllParameters &parameters,
+                        const Parameters::ThreeD        &three_d,
+                        const std::string               &file,
+                        const MPI_Comm                   communicator)
+    {
+      // The mesh and its DoFs, not the matrix: cheap at any size.
+      parallel::distributed::Triangulation<dim> triangulation(communicator);
+      make_body_mesh(parameters,
+                     three_d,
+                     parameters.mesh.global_refinements,
+                     triangulation);
+      const unsigned int degree =
+        parameters.discretization.displacement_degree();
+      const FESystem<dim> fe(*displacement_element(degree),
+                             dim,
+                             *pressure_element(degree),
+                             1);
+      DoFHandler<dim>     dofs(triangulation);
+      dofs.distribute_dofs(fe);
+      if (Utilities::MPI::this_mpi_process(communicator) == 0)
+        std::cout << "3D body: " << triangulation.n_global_active_cells()
+                  << " cells, " << dofs.n_dofs() << " DoFs (" << fe.get_name()
+                  << "), " << Utilities::MPI::n_mpi_processes(communicator)
+                  << " MPI process(es)" << std::endl
+                  << "rollnip: '" << file << "' is valid" << std::endl;
+      return 0;
     }
   } // namespace three_d
 } // namespace rollnip

@@ -26,6 +26,29 @@ namespace rollnip
       return result;
     }
 
+    void
+    refined_gmsh_cross_section(const Parameters::AllParameters &parameters,
+                               const unsigned int               level,
+                               Triangulation<2>                &flat)
+    {
+      Triangulation<2> section;
+      read_gmsh_cross_section(parameters, section);
+      section.set_all_manifold_ids(0);
+      section.set_manifold(0, PolarManifold<2>(Point<2>()));
+      section.refine_global(level);
+      GridGenerator::flatten_triangulation(section, flat);
+    }
+
+    void
+    bend_into_cylinder(Triangulation<dim> &body)
+    {
+      GridTools::transform(
+        [](const Point<dim> &p) {
+          return Point<dim>(p[0] * std::cos(p[1]), p[0] * std::sin(p[1]), p[2]);
+        },
+        body);
+    }
+
     namespace
     {
       /// A drawn mesh brings its own layers: says so (on the root process)
@@ -58,7 +81,7 @@ namespace rollnip
       }
 
       /// Every cell's material id: the cover layer (0 on the core) its
-      /// centre's distance from the axis lies in. radial_steps() puts every
+      /// mean vertex radius lies in. radial_steps() puts every
       /// interface on a cell boundary, so no cell straddles two layers.
       void
       set_slice_layer_ids(const Parameters::AllParameters &parameters,
@@ -66,11 +89,8 @@ namespace rollnip
       {
         const std::vector<double> radii = layer_radii(parameters);
         for (const auto &cell : triangulation.active_cell_iterators())
-          {
-            const Point<dim> c = cell->center();
-            cell->set_material_id(
-              layer_at_radius(radii, std::hypot(c[0], c[1])));
-          }
+          cell->set_material_id(
+            layer_at_radius(radii, mean_vertex_radius(cell)));
       }
 
       /// The builtin sector annulus as an (r, theta, z) box bent into
@@ -95,20 +115,11 @@ namespace rollnip
           Point<dim>(g.inner_radius, 0., 0.),
           Point<dim>(g.outer_radius, g.sector_angle, thickness),
           /*colorize=*/true);
-        GridTools::transform(
-          [](const Point<dim> &p) {
-            return Point<dim>(p[0] * std::cos(p[1]),
-                              p[0] * std::sin(p[1]),
-                              p[2]);
-          },
-          coarse);
+        bend_into_cylinder(coarse);
       }
 
       /**
-       * The gmsh cross-section of Mesh/Mesh file (checked as in 2D: quads,
-       * ids 0..3 on the arcs and edges of Geometry), refined @p level times
-       * in the polar chart (so a structured annulus halves in r and theta as
-       * the builtin mesh does), then extruded through the z of @p planes.
+       * refined_gmsh_cross_section() extruded through the z of @p planes.
        * The side faces keep the 2D ids; z = 0 and z = L get SliceIds.
        */
       void
@@ -117,12 +128,8 @@ namespace rollnip
                       const std::vector<double>       &planes,
                       Triangulation<dim>              &coarse)
       {
-        Triangulation<2> section, flat;
-        read_gmsh_cross_section(parameters, section);
-        section.set_all_manifold_ids(0);
-        section.set_manifold(0, PolarManifold<2>(Point<2>()));
-        section.refine_global(level);
-        GridGenerator::flatten_triangulation(section, flat);
+        Triangulation<2> flat;
+        refined_gmsh_cross_section(parameters, level, flat);
         GridGenerator::extrude_triangulation(flat, planes, coarse);
         const double tol = 1e-9 * planes.back();
         for (const auto &face : coarse.active_face_iterators())
@@ -137,7 +144,7 @@ namespace rollnip
       }
     } // namespace
 
-    std::vector<double>
+    AxialPlanes
     make_slice_mesh(const Parameters::AllParameters           &parameters,
                     const unsigned int                         level,
                     const double                               thickness,
@@ -145,11 +152,11 @@ namespace rollnip
                     parallel::distributed::Triangulation<dim> &triangulation,
                     const double                               axial_grading)
     {
-      Triangulation<dim>  coarse;
-      std::vector<double> planes =
-        axial_planes(thickness, layers, axial_grading);
-      const bool gmsh  = parameters.mesh.source == Parameters::MeshSource::gmsh;
-      const bool drawn = is_drawn_slice(parameters);
+      Triangulation<dim> coarse;
+      AxialPlanes planes = {axial_planes(thickness, layers, axial_grading),
+                            true};
+      const bool  gmsh = parameters.mesh.source == Parameters::MeshSource::gmsh;
+      const bool  drawn = is_drawn_slice(parameters);
       if (drawn)
         {
           planes = read_drawn_slice(parameters, thickness, coarse);
@@ -159,7 +166,7 @@ namespace rollnip
                               triangulation.get_communicator());
         }
       else if (gmsh)
-        make_gmsh_slice(parameters, level, planes, coarse);
+        make_gmsh_slice(parameters, level, planes.z, coarse);
       else
         make_builtin_slice(parameters,
                            level,
@@ -179,7 +186,7 @@ namespace rollnip
           // and z, so the layers along the axis halve too.
           triangulation.refine_global(level);
           for (unsigned int k = 0; k < level; ++k)
-            planes = halved_planes(planes);
+            planes.z = halved_planes(planes.z);
         }
       return planes;
     }

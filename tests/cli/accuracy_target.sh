@@ -17,7 +17,9 @@
 #  - load control at the reference P, Target = 0.5 % on u0 and 2b: u0 within
 #    0.5 % of 2 mm and b within 0.5 % (+ 2e-5);
 #  - indentation control, Target = 0.1 % on P and 2b (the default
-#    quantities), and load control, 0.1 % on u0 and 2b: met in one run by
+#    quantities), and load control, 0.1 % on the same "P, 2b" (P is given
+#    there: the screen says the target goes to u0, and accuracy_target.csv
+#    has u0's estimate within it): met in one run by
 #    Q2-P1 at level 0 with 4 edge refinements, b within 0.1 % (1.4e-4 and
 #    2.2e-4 measured; without the edge refinements the program chose
 #    Q1-P0 at level 3, 4 times dearer and 5.2e-4 off);
@@ -113,9 +115,10 @@ b=$(csv_value load/nip_characteristic.csv half_chord_mm 1)
 check_rel_close "u0 (load, target 0.5 %)" "$u0" 2 5e-3
 check_rel_close "b (load, target 0.5 %)" "$b" 11.521238 5.02e-3
 
-# P and 2b at 0.1 % (indentation), u0 and 2b (load): Q2-P1 at level 0 with
-# 4 edge refinements, the first candidate tried.
-for case in "indentation_b indentation 2 P" "load_b load 20.02673146 u0"; do
+# P and 2b at 0.1 % (indentation), u0 and 2b (load, asked as the default
+# "P, 2b": P is prescribed there, the target goes to u0): Q2-P1 at level 0
+# with 4 edge refinements, the first candidate tried.
+for case in "indentation_b indentation 2 P" "load_b load 20.02673146 P"; do
   set -- $case
   run "$1" "$2" "$3" "0.1 %" "$4, 2b"
   grep -q "met with Q2-P1 at mesh level 0 with 4 edge refinements after 1 run" \
@@ -133,7 +136,13 @@ done
 P=$(csv_value indentation_b/nip_characteristic.csv P_N_per_mm 1)
 check_rel_close "P (indentation, target 0.1 % on P and 2b)" "$P" 20.02673146 1e-3
 u0=$(csv_value load_b/nip_characteristic.csv u0_mm 1)
-check_rel_close "u0 (load, target 0.1 % on u0 and 2b)" "$u0" 2 1e-3
+check_rel_close "u0 (load, target 0.1 % on P and 2b)" "$u0" 2 1e-3
+grep -q "^Accuracy target: P is prescribed in this contact mode; the target applies to u0 in its place" \
+  load_b.out || fail "load_b: the screen does not say that the target on P goes to u0"
+! grep -q "is prescribed" indentation_b.out ||
+  fail "indentation_b: a target on P is moved although P is not prescribed"
+est=$(csv_value load_b/accuracy_target.csv estimated_relative_error_u0 1)
+check_less "load_b: the estimated relative error of u0 (the target's, not P's)" "$est" 1e-3
 
 # 0.01 % on u0 under load: Q2-P1 at level 1 of the halved coarse mesh
 # (true error 2.3e-5 at most over run 30's four nips) is predicted to meet

@@ -1,6 +1,7 @@
 #ifndef rollnip_three_d_axial_grading_h
 #define rollnip_three_d_axial_grading_h
 
+#include <utility>
 #include <vector>
 
 namespace rollnip
@@ -27,6 +28,12 @@ namespace rollnip
     /// The index of the plane of @p planes nearest to @p z.
     unsigned int
     nearest_plane(const std::vector<double> &planes, const double z);
+
+    /// The hat functions of @p planes at @p z: (j, t) with z between
+    /// planes j and j + 1, plane j's hat 1 - t there and plane j + 1's t
+    /// (t = 0 at or beyond the last plane, and before the first).
+    std::pair<unsigned int, double>
+    hat_share(const std::vector<double> &planes, const double z);
   } // namespace three_d
 } // namespace rollnip
 

@@ -39,7 +39,8 @@ namespace rollnip
     } // namespace CoreIds
 
     /// Throws a one-line message naming the entry if the elastic core does
-    /// not fit the scene (radii, bearing, sector, boundary conditions).
+    /// not fit the scene (a mesh drawn in 3D, radii, bearing, sector,
+    /// boundary conditions).
     void
     check_elastic_core(const Parameters::AllParameters &parameters,
                        const Parameters::ThreeD        &three_d);
@@ -48,8 +49,12 @@ namespace rollnip
      * The cover of make_slice_mesh() on the tube: the tube's radial cells
      * (two coarse cells, halved @p level times) inside R1, the cover's
      * axial layers over the face and cells of the mean layer thickness on
-     * to the bearing, the cover's cells beyond the face removed. Material
-     * ids: the cover layers 0, 1, ... and the core n_layers.
+     * to the bearing, the cover's cells beyond the face removed. The
+     * cover's cross-section is the builtin one or, with Mesh/Source =
+     * gmsh, the quadrilaterals of Mesh/Mesh file refined in their polar
+     * chart; the tube's rings then run through the bond's own nodes, so
+     * tube and cover share them. Material ids: the cover layers 0, 1, ...
+     * and the core n_layers; boundary ids from where each face lies.
      */
     void
     make_core_tube_mesh(const Parameters::AllParameters           &parameters,

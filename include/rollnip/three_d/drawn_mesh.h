@@ -4,6 +4,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <rollnip/parameters.h>
+#include <rollnip/three_d/slice_mesh.h>
 
 #include <string>
 #include <vector>
@@ -17,17 +18,16 @@ namespace rollnip
      * doc/three_d.md "A gmsh mesh drawn in 3D") into the empty @p coarse,
      * unrefined and without manifolds. Refused, in one line naming the
      * file, unless: every cell is a hexahedron with positive volume; the
-     * mesh spans z = 0 to @p length (Three d/Slice thickness); its cells
-     * lie in layers along the axis (every cell between two neighbouring
-     * planes z = const, as gmsh's Extrude with Layers draws them), so
-     * that the line load along the axis has its planes; every boundary
-     * face carries one of the ids of SliceIds and lies where that id says
-     * (the arcs r = R1, R0 of Geometry, the planes theta = 0 and theta =
-     * sector angle, z = 0 and z = @p length); and no cell straddles an
-     * interface of a layered cover. Returns the z of the planes [mm],
-     * from 0 to @p length.
+     * mesh spans z = 0 to @p length (Three d/Slice thickness); every
+     * boundary face carries one of the ids of SliceIds and lies where that
+     * id says (the arcs r = R1, R0 of Geometry, the planes theta = 0 and
+     * theta = sector angle, z = 0 and z = @p length); and no cell
+     * straddles an interface of a layered cover. Returns the planes of
+     * the mesh's layers along the axis (gmsh's Extrude with Layers), or,
+     * when its cells are not in layers, equidistant stations about as far
+     * apart as the outer surface's cells are long in z.
      */
-    std::vector<double>
+    AxialPlanes
     read_drawn_slice(const Parameters::AllParameters &parameters,
                      const double                     length,
                      Triangulation<3>                &coarse);
@@ -36,14 +36,6 @@ namespace rollnip
     /// (Mesh/Source = gmsh and a volume mesh in the file).
     bool
     is_drawn_slice(const Parameters::AllParameters &parameters);
-
-    /// --validate on a 3D scene with a drawn mesh: read_drawn_slice()'s
-    /// checks, then "'@p file' is valid" on the root process (@p root).
-    int
-    validate_drawn_slice(const Parameters::AllParameters &parameters,
-                         const double                     length,
-                         const std::string               &file,
-                         const bool                       root);
   } // namespace three_d
 } // namespace rollnip
 

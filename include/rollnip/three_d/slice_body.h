@@ -101,21 +101,34 @@ namespace rollnip
       /// The line load along the roll axis: (z [mm], q [N/mm]) at every
       /// plane of surface nodes (Q2: vertex and mid-layer planes), the
       /// full nip's normal force of the plane's
-      /// active nodes over the plane's share of the slice length.
+      /// active nodes over the plane's share of the slice length. On a
+      /// drawn mesh not in layers, at its stations: each active node's
+      /// force shared between the two stations around it by the linear hat
+      /// functions of the stations, over the hat's integral (a weighted
+      /// mean of q about the station; the total force is kept).
       std::vector<std::pair<double, double>>
       line_load_profile() const;
 
       /// The z of the planes of nodes along the axis [mm]: the layer
-      /// boundaries, and with Q2 the layers' middles too.
+      /// boundaries, and with Q2 the layers' middles too (a drawn mesh not
+      /// in layers: its stations).
       std::vector<double>
       node_planes() const;
 
       /// The share of the slice length [mm] of every plane of
       /// line_load_profile(): half the layers on either side (Q1), the
       /// lumped Q2 weights h/6 + h/6 at a vertex plane and 2h/3 at a
-      /// mid-layer plane (Q2). They sum to the slice thickness.
+      /// mid-layer plane (Q2), half the gaps on either side of a station.
+      /// They sum to the slice thickness.
       std::vector<double>
       line_load_widths() const;
+
+      /// A drawn mesh not in layers: adds to @p f (one entry per station of
+      /// @p stations) this process's contact force [N] shared by the
+      /// stations' hat functions in z.
+      void
+      add_station_forces(const std::vector<double> &stations,
+                         std::vector<double>       &f) const;
 
       /// 1 (Q1-P0) or 2 (Q2-P1).
       unsigned int
@@ -260,8 +273,11 @@ namespace rollnip
       const Parameters::ThreeD                  three_d;
       parallel::distributed::Triangulation<dim> triangulation;
       /// The z of the planes between the layers of cells [mm], 0 to
-      /// Slice thickness: the extruded layers, or a drawn mesh's own.
+      /// Slice thickness: the extruded layers, or a drawn mesh's own (for
+      /// a drawn mesh not in layers: its stations, AxialPlanes).
       std::vector<double> layer_planes;
+      /// AxialPlanes::layered: false for a drawn mesh not in layers.
+      bool layered = true;
       /// 1 (Q1-P0) or 2 (Q2-P1): Discretization/Element.
       const unsigned int degree;
       /// MappingQ(degree): the Q2 cells follow the cylindrical manifold.

@@ -6,6 +6,7 @@
 
 #include <rollnip/parameters.h>
 
+#include <cmath>
 #include <vector>
 
 namespace rollnip
@@ -28,6 +29,47 @@ namespace rollnip
       /// z = Slice thickness.
       constexpr types::boundary_id far_face = 5;
     } // namespace SliceIds
+
+    /// The mean distance of @p cell's vertices from the roll axis [mm]: the
+    /// middle radius of a cell between two arcs. The centre's distance is
+    /// not: a cell wide in theta has its centre inside its inner arc.
+    template <typename CellIterator>
+    double
+    mean_vertex_radius(const CellIterator &cell)
+    {
+      double sum = 0;
+      for (const unsigned int v : cell->vertex_indices())
+        sum += std::hypot(cell->vertex(v)[0], cell->vertex(v)[1]);
+      return sum / cell->n_vertices();
+    }
+
+    /// Where along the axis the line load is given.
+    struct AxialPlanes
+    {
+      /// [mm], from 0 to the body's length.
+      std::vector<double> z;
+      /// Whether every cell of the cover lies between two neighbouring
+      /// planes (the extruded body, a drawn mesh in layers): then the
+      /// planes are those of the nodes. Otherwise (a drawn mesh not in
+      /// layers) they are stations that share each node's force by
+      /// linear hat functions in z.
+      bool layered = true;
+    };
+
+    /// The gmsh cross-section of Mesh/Mesh file (checked as in 2D: quads,
+    /// ids 0..3 on the arcs and edges of Geometry) refined @p level times
+    /// in its polar chart, so that a structured annulus halves in r and
+    /// theta as the builtin mesh does, into the empty @p flat, flattened
+    /// (level 0 only, no manifolds).
+    void
+    refined_gmsh_cross_section(const Parameters::AllParameters &parameters,
+                               const unsigned int               level,
+                               Triangulation<2>                &flat);
+
+    /// The (r, theta, z) box @p body bent into Cartesian coordinates about
+    /// the z axis.
+    void
+    bend_into_cylinder(Triangulation<dim> &body);
 
     /// Every step of @p steps cut into 2^@p level equal ones: the cells of
     /// the 2D mesh level @p level in a coarse mesh.
@@ -55,9 +97,9 @@ namespace rollnip
      * (drawn_mesh.h): its own layers replace @p layers and
      * @p axial_grading, and it is refined @p level times in all three
      * directions. Returns the z of the planes between the layers of cells
-     * [mm], 0 to @p thickness.
+     * [mm], 0 to @p thickness (a drawn mesh not in layers: its stations).
      */
-    std::vector<double>
+    AxialPlanes
     make_slice_mesh(const Parameters::AllParameters           &parameters,
                     const unsigned int                         level,
                     const double                               thickness,

@@ -6,6 +6,8 @@
 
 #include <mpi.h>
 
+#include <string>
+
 namespace rollnip
 {
   /**
@@ -20,6 +22,22 @@ namespace rollnip
   run_three_d(const Parameters::AllParameters &parameters,
               const Parameters::ThreeD        &three_d,
               MPI_Comm                         communicator);
+
+  namespace three_d
+  {
+    /**
+     * --validate on a 3D scene: builds the body's mesh at Mesh/Global
+     * refinements (the cover, a gmsh cross-section or a drawn mesh with
+     * their checks, the elastic core's tube), counts its DoFs and prints
+     * them with "'@p file' is valid" on the root process; throws the
+     * one-line message of the first check that fails.
+     */
+    int
+    validate_slice_body(const Parameters::AllParameters &parameters,
+                        const Parameters::ThreeD        &three_d,
+                        const std::string               &file,
+                        MPI_Comm                         communicator);
+  } // namespace three_d
 } // namespace rollnip
 
 #endif
