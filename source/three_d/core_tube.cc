@@ -124,8 +124,9 @@ namespace rollnip
                      const std::vector<double>       &planes,
                      Triangulation<dim>              &body)
       {
-        const double     R1  = parameters.geometry.inner_radius;
-        const double     tol = 1e-6 * parameters.geometry.outer_radius;
+        const double     R1     = parameters.geometry.inner_radius;
+        const double     sector = parameters.geometry.sector_angle;
+        const double     tol    = 1e-6 * parameters.geometry.outer_radius;
         Triangulation<2> cover;
         refined_gmsh_cross_section(parameters, level, cover);
         // The bond's vertices by angle, theta in (-pi/2, 3 pi/2] so that a
@@ -149,10 +150,16 @@ namespace rollnip
         std::vector<Point<2>> vertices;
         for (unsigned int k = 0; k < n_rings; ++k)
           for (const auto &[theta, p] : bond)
-            vertices.push_back(
-              k + 1 == n_rings ? p
-                               : radii[n_rings - 1 - k] *
-                                   Point<2>(std::cos(theta), std::sin(theta)));
+            {
+              // In [0, sector]: no ring node a round-off below the axis,
+              // where the bore's angle (core_deflection_profile()) would
+              // wrap to -180 deg.
+              const double t = std::clamp(theta, 0., sector);
+              vertices.push_back(k + 1 == n_rings
+                                   ? p
+                                   : radii[n_rings - 1 - k] *
+                                       Point<2>(std::cos(t), std::sin(t)));
+            }
         std::vector<CellData<2>> cells;
         for (unsigned int k = 0; k + 1 < n_rings; ++k)
           for (unsigned int i = 0; i + 1 < n; ++i)

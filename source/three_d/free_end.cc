@@ -238,8 +238,12 @@ namespace rollnip
       for (const BondStress &s : bond_stresses(body))
         {
           const unsigned int j = nearest_plane(z, s.where[2]);
-          // k = 0: the whole bond; k = 1: the middle plane z = 0 too.
-          for (unsigned int k = 0; k < (j == 0 ? 2u : 1u); ++k)
+          // k = 0: the whole bond; k = 1: the middle plane z = 0 too (the
+          // first station holds the nodes of about a cell).
+          const bool middle = body.has_node_planes()
+                                ? j == 0
+                                : std::abs(s.where[2]) < 1e-9 * z.back();
+          for (unsigned int k = 0; k < (middle ? 2u : 1u); ++k)
             {
               if (s.shear() > shear[k][0])
                 shear[k] = record(s.shear(), s);

@@ -47,28 +47,15 @@ namespace rollnip
         VectorTools::interpolate_boundary_values(
           dof_handler, id, zero, c, mask(comp));
       };
-      // Fixed wins over symmetry where they meet: it goes in first.
-      AssertThrow(bc[SliceIds::inner_arc] == BC::fixed,
-                  ExcMessage("Three d: Boundary conditions/Inner arc must "
-                             "be fixed (the bonded core)"));
+      // Fixed wins over symmetry where they meet: it goes in first. The
+      // conditions were checked with the mesh (check_slice_scene()).
       support(SliceIds::inner_arc, -1);
       const double alpha = parameters.geometry.sector_angle;
       if (bc[SliceIds::far_edge] == BC::fixed)
         support(SliceIds::far_edge, -1);
       else if (bc[SliceIds::far_edge] == BC::symmetry)
-        {
-          AssertThrow(std::abs(alpha - numbers::PI / 2) < 1e-12 ||
-                        std::abs(alpha - numbers::PI) < 1e-12,
-                      ExcMessage("Three d: Boundary conditions/Far edge = "
-                                 "symmetry needs a sector angle of 90 or "
-                                 "180 deg"));
-          support(SliceIds::far_edge,
-                  std::abs(alpha - numbers::PI / 2) < 1e-12 ? 0 : 1);
-        }
-      else
-        AssertThrow(bc[SliceIds::far_edge] == BC::free,
-                    ExcMessage("Three d: Boundary conditions/Far edge must "
-                               "be fixed, free or symmetry"));
+        support(SliceIds::far_edge,
+                std::abs(alpha - numbers::PI / 2) < 1e-12 ? 0 : 1);
       if (three_d.elastic_core) // simply supported at the journal
         {
           support(CoreIds::journal, 0);

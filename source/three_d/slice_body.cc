@@ -44,6 +44,52 @@ namespace rollnip
         return std::make_unique<FE_DGPNonparametric<dim>>(1);
       }
 
+      /// Throws the one-line message of the first entry the 3D body cannot
+      /// take: the contact mode, the theory, the supports and the core
+      /// deflection's far edge (the elastic core's own checks are
+      /// check_elastic_core()'s).
+      void
+      check_slice_scene(const Parameters::AllParameters &parameters,
+                        const Parameters::ThreeD        &three_d)
+      {
+        using Mode      = Parameters::ContactMode;
+        const Mode mode = parameters.contact.mode;
+        AssertThrow(mode == Mode::indentation || mode == Mode::load,
+                    ExcMessage("Three d: Contact/Mode must be indentation (the "
+                               "approaches u0 are Contact/Values) or load (the "
+                               "line loads P)"));
+        AssertThrow(parameters.material.theory == Parameters::Theory::nonlinear,
+                    ExcMessage("Three d: Material/Theory must be nonlinear"));
+        using BC            = Parameters::BoundaryCondition;
+        const auto  &bc     = parameters.boundary_conditions.condition;
+        const double alpha  = parameters.geometry.sector_angle;
+        const bool   ninety = std::abs(alpha - numbers::PI / 2) < 1e-12;
+        const bool   half   = std::abs(alpha - numbers::PI) < 1e-12;
+        AssertThrow(bc[SliceIds::inner_arc] == BC::fixed,
+                    ExcMessage("Three d: Boundary conditions/Inner arc must "
+                               "be fixed (the bonded core)"));
+        AssertThrow(bc[SliceIds::far_edge] != BC::symmetry || ninety || half,
+                    ExcMessage("Three d: Boundary conditions/Far edge = "
+                               "symmetry needs a sector angle of 90 or "
+                               "180 deg"));
+        AssertThrow(bc[SliceIds::far_edge] == BC::fixed ||
+                      bc[SliceIds::far_edge] == BC::symmetry ||
+                      bc[SliceIds::far_edge] == BC::free,
+                    ExcMessage("Three d: Boundary conditions/Far edge must "
+                               "be fixed, free or symmetry"));
+        // The core moves along x1: a fixed far edge, or the symmetry plane
+        // x1 = 0 of a 90 deg sector, would hold the cover's edge against it.
+        AssertThrow(CoreDeflection(three_d.core_deflection).is_zero() ||
+                      bc[SliceIds::far_edge] == BC::free ||
+                      (bc[SliceIds::far_edge] == BC::symmetry && half),
+                    ExcMessage("Three d/Core deflection needs Boundary "
+                               "conditions/Far edge = free, or symmetry with a "
+                               "sector angle of 180 deg (the core moves along "
+                               "x1)"));
+        if (three_d.elastic_core)
+          check_elastic_core(parameters, three_d);
+      }
+
       /// The body's mesh at @p level into @p triangulation: the cover
       /// (make_slice_mesh()) or, with Core = elastic, the cover on the tube
       /// (make_core_tube_mesh(), whose planes are the cover's layers).
@@ -53,6 +99,7 @@ namespace rollnip
                      const unsigned int                         level,
                      parallel::distributed::Triangulation<dim> &triangulation)
       {
+        check_slice_scene(parameters, three_d);
         if (!three_d.elastic_core)
           return make_slice_mesh(parameters,
                                  level,
@@ -60,7 +107,6 @@ namespace rollnip
                                  three_d.layers,
                                  triangulation,
                                  three_d.axial_grading);
-        check_elastic_core(parameters, three_d);
         make_core_tube_mesh(parameters, three_d, level, triangulation);
         return {axial_planes(three_d.slice_thickness,
                              three_d.layers,
@@ -215,8 +261,6 @@ namespace rollnip
         , iterative(parameters.linear_solver.method == "gmres-amg")
         , core(three_d.core_deflection)
     {
-      AssertThrow(parameters.material.theory == Parameters::Theory::nonlinear,
-                  ExcMessage("Three d: Material/Theory must be nonlinear"));
       for (unsigned int j = 0; j < parameters.material.n_layers(); ++j)
         layer_laws.emplace_back(make_layer_law<dim>(parameters.material, j));
       if (three_d.elastic_core)

@@ -11,18 +11,7 @@ namespace rollnip
     {
       if (core.is_zero())
         return;
-      using BC       = Parameters::BoundaryCondition;
-      const auto &bc = parameters.boundary_conditions.condition;
-      // The core moves along x1: a fixed far edge, or the symmetry plane
-      // x1 = 0 of a 90 deg sector, would hold the cover's edge against it.
-      AssertThrow(bc[SliceIds::far_edge] == BC::free ||
-                    (bc[SliceIds::far_edge] == BC::symmetry &&
-                     std::abs(parameters.geometry.sector_angle - numbers::PI) <
-                       1e-12),
-                  ExcMessage("Three d/Core deflection needs Boundary "
-                             "conditions/Far edge = free, or symmetry with a "
-                             "sector angle of 180 deg (the core moves along "
-                             "x1)"));
+      // Its far edge was checked with the mesh (check_slice_scene()).
       // Every node of the bond, Q2's edge and face nodes too: the bent
       // core carries all the displacement dofs at R1.
       double largest = 0;

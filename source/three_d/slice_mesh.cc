@@ -62,7 +62,7 @@ namespace rollnip
         if ((layers != 1 || axial_grading != 1.) &&
             Utilities::MPI::this_mpi_process(communicator) == 0)
           std::cerr << "rollnip: warning: Three d/Layers and Three d/Axial "
-                       "grading are ignored: the layers along the axis are "
+                       "grading are ignored: the cells along the axis are "
                        "those of the 3D mesh in Mesh/Mesh file '"
                     << file << "'" << std::endl;
       }

@@ -91,11 +91,13 @@ namespace rollnip
         Utilities::MPI::max(patch.half_chord_middle, communicator);
       patch.half_chord_far =
         Utilities::MPI::max(patch.half_chord_far, communicator);
-      // consistent_line_load() inverts the mass matrix of linear elements;
+      // consistent_line_load() inverts the mass matrix of linear elements
+      // (the layers of Q1, or the stations' hats of a mesh not in layers);
       // Q2's lumped value is exact for a q uniform along the axis.
       patch.line_load_middle =
-        degree == 1 ? consistent_line_load(line_load_profile()).front().second
-                    : line_load_profile().front().second;
+        degree == 1 || !layered
+          ? consistent_line_load(line_load_profile()).front().second
+          : line_load_profile().front().second;
       return patch;
     }
 

@@ -180,12 +180,6 @@ namespace rollnip
               const Parameters::ThreeD        &three_d,
               MPI_Comm                         communicator)
   {
-    using Mode      = Parameters::ContactMode;
-    const Mode mode = parameters.contact.mode;
-    AssertThrow(mode == Mode::indentation || mode == Mode::load,
-                ExcMessage("Three d: Contact/Mode must be indentation (the "
-                           "approaches u0 are Contact/Values) or load (the "
-                           "line loads P)"));
     const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
     const std::string &directory = parameters.output.directory;
     Timer              total;

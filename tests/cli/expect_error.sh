@@ -15,6 +15,8 @@
 # 1 (non-zero, and not a crash: a signal gives 128+n, an abort 134, an
 # uncaught exception under MPI something else again), exactly one line on
 # standard error, beginning with 'rollnip: error:' and matching REGEX.
+# Then 'rollnip --validate PRM' must refuse it with the same line, except
+# the inputs below that only the solve can find wrong.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
@@ -68,3 +70,17 @@ pass "it begins with 'rollnip: error:'"
 
 [[ "$line" =~ $regex ]] || fail "the error line does not match /$regex/"
 pass "it matches /$regex/"
+
+# Found only while solving, so --validate passes them: a face law table
+# shorter than the loads the face reaches, a mating roll's sector under
+# load control, a nip angle below the nip-fitted mesh's first cell.
+case "$(basename "$prm")" in
+  NONE | face_law_too_short.prm | mating_roll_sector_load.prm | nip_below_mesh.prm)
+    exit 0 ;;
+esac
+rc=0
+"$rollnip" --validate "$prm" > validate_stdout.txt 2> validate_stderr.txt || rc=$?
+[ "$rc" -eq 1 ] || { cat validate_stderr.txt; fail "--validate: exit code $rc, expected 1"; }
+[ "$(cat validate_stderr.txt)" = "$line" ] ||
+  { cat validate_stderr.txt; fail "--validate refuses it with another line than the run"; }
+pass "--validate refuses it with the same line"

@@ -24,8 +24,8 @@ namespace rollnip
      * theta = sector angle, z = 0 and z = @p length); and no cell
      * straddles an interface of a layered cover. Returns the planes of
      * the mesh's layers along the axis (gmsh's Extrude with Layers), or,
-     * when its cells are not in layers, equidistant stations about as far
-     * apart as the outer surface's cells are long in z.
+     * when its cells are not in layers, equidistant stations twice as far
+     * apart as the outer surface's faces are long in z (their median).
      */
     AxialPlanes
     read_drawn_slice(const Parameters::AllParameters &parameters,

@@ -130,6 +130,14 @@ namespace rollnip
       add_station_forces(const std::vector<double> &stations,
                          std::vector<double>       &f) const;
 
+      /// Whether node_planes() are planes of nodes (false: the stations of
+      /// a drawn mesh not in layers).
+      bool
+      has_node_planes() const
+      {
+        return layered;
+      }
+
       /// 1 (Q1-P0) or 2 (Q2-P1).
       unsigned int
       displacement_degree() const
