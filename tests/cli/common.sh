@@ -257,3 +257,16 @@ files_agree()
   "$numdiff" -r "$rel" -a "$abs" -s $' \t\n,=' "$a" "$b" | tail -n 30 || true
   return 1
 }
+
+# gmsh_mesh GMSH DIMENSION GEO OUT [ARGS...]: meshes GEO with GMSH in
+# DIMENSION (2 or 3) into OUT (msh2), passing ARGS (e.g. -setnumber NR 8);
+# fails, showing gmsh's log, if gmsh cannot or writes nothing.
+gmsh_mesh()
+{
+  local gmsh="$1" dimension="$2" geo="$3" out="$4"
+  shift 4
+  "$gmsh" "-$dimension" -format msh2 "$@" "$geo" -o "$out" > "$out.log" 2>&1 ||
+    { cat "$out.log"; fail "gmsh could not mesh $geo"; }
+  [ -s "$out" ] || fail "gmsh wrote no $out"
+  pass "gmsh meshed $(basename "$geo") into $out"
+}

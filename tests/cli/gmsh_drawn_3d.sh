@@ -39,18 +39,9 @@ require_executable "mpiexec (MPIEXEC_EXECUTABLE)" "$mpiexec"
 start_test gmsh_drawn_3d
 mpi_setup "$mpiexec"
 
-mesh()
-{
-  local dimension="$1" geo="$2" out="$3"
-  shift 3
-  "$gmsh" "-$dimension" -format msh2 "$@" "$geo" -o "$out" > "$out.log" 2>&1 ||
-    { cat "$out.log"; fail "gmsh could not mesh $geo"; }
-  [ -s "$out" ] || fail "gmsh wrote no $out"
-  pass "gmsh meshed $(basename "$geo") into $out"
-}
-mesh 2 "$free_geo" section.msh
-mesh 3 "$free_3d_geo" drawn_1.msh -setnumber SliceThickness 1 -setnumber NLayers 1
-mesh 3 "$free_3d_geo" drawn_20.msh -setnumber SliceThickness 20 -setnumber NLayers 2
+gmsh_mesh "$gmsh" 2 "$free_geo" section.msh
+gmsh_mesh "$gmsh" 3 "$free_3d_geo" drawn_1.msh -setnumber SliceThickness 1 -setnumber NLayers 1
+gmsh_mesh "$gmsh" 3 "$free_3d_geo" drawn_20.msh -setnumber SliceThickness 20 -setnumber NLayers 2
 
 # write NAME LEVEL MESH_FILE LAYERS [LENGTH]: SCENE on MESH_FILE at LEVEL;
 # with LENGTH a free cover end of that length at u0 = 1 mm.

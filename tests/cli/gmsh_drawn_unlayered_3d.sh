@@ -44,18 +44,9 @@ require_executable "mpiexec (MPIEXEC_EXECUTABLE)" "$mpiexec"
 start_test gmsh_drawn_unlayered_3d
 mpi_setup "$mpiexec"
 
-mesh()
-{
-  local geo="$1" out="$2"
-  shift 2
-  "$gmsh" -3 -format msh2 "$@" "$geo" -o "$out" > "$out.log" 2>&1 ||
-    { cat "$out.log"; fail "gmsh could not mesh $geo"; }
-  [ -s "$out" ] || fail "gmsh wrote no $out"
-  pass "gmsh meshed $(basename "$geo") into $out"
-}
-mesh "$split_geo" split_10.msh -setnumber SliceThickness 10
-mesh "$split_geo" split_20.msh -setnumber SliceThickness 20
-mesh "$layered_geo" layered_20.msh -setnumber SliceThickness 20 \
+gmsh_mesh "$gmsh" 3 "$split_geo" split_10.msh -setnumber SliceThickness 10
+gmsh_mesh "$gmsh" 3 "$split_geo" split_20.msh -setnumber SliceThickness 20
+gmsh_mesh "$gmsh" 3 "$layered_geo" layered_20.msh -setnumber SliceThickness 20 \
   -setnumber NLayers 2
 
 # run NAME LEVEL MESH_FILE LENGTH [free]: SCENE on MESH_FILE at LEVEL, the

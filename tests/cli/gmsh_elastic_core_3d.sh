@@ -42,19 +42,10 @@ require_executable rollnip "$rollnip"
 require_executable "gmsh (needed to mesh the cross-sections)" "$gmsh"
 start_test gmsh_elastic_core_3d
 
-mesh()
-{
-  local geo="$1" out="$2"
-  shift 2
-  "$gmsh" -2 -format msh2 "$@" "$geo" -o "$out" > "$out.log" 2>&1 ||
-    { cat "$out.log"; fail "gmsh could not mesh $geo"; }
-  [ -s "$out" ] || fail "gmsh wrote no $out"
-  pass "gmsh meshed $(basename "$geo") into $out"
-}
-mesh "$structured_geo" structured.msh -setnumber R1 47.2 -setnumber R0 60.7 \
+gmsh_mesh "$gmsh" 2 "$structured_geo" structured.msh -setnumber R1 47.2 -setnumber R0 60.7 \
   -setnumber Sector 180 -setnumber NR 6 -setnumber NTheta 16 \
   -setnumber GradeTheta 10
-mesh "$free_geo" free.msh -setnumber Sector 180
+gmsh_mesh "$gmsh" 2 "$free_geo" free.msh -setnumber Sector 180
 
 # run NAME LEVEL [MESH_FILE]: SCENE at LEVEL, builtin or on MESH_FILE.
 run()
