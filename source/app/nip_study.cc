@@ -284,6 +284,10 @@ namespace rollnip
         // A control of its own: the nips of earlier targets would give a
         // worse slope than the primary's.
         control = std::make_unique<NipControl>(scene->nip_solver(), parameters);
+        // It starts from the primary's state on one process and from its
+        // own last nip on several: only fully converged solves make its
+        // answer independent of that.
+        control->allow_provisional(false);
         NipRow c;
         c.nonlinear = control->solve(target, row.nonlinear.theta0, slope);
         if (!c.nonlinear.converged)

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <rollnip/app/pressure_run.h>
+#include <rollnip/contact/inverse_contact.h>
 #include <rollnip/problem.h>
 #include <rollnip/scene/scene_builder.h>
 
@@ -21,6 +22,16 @@ namespace rollnip
     try
       {
         problem->setup();
+        // Prescribed nip angles on a mesh that does not move its nodes to
+        // them: each must hold a contact zone, as the solve would check.
+        const auto &c = parameters.contact;
+        if (c.mode == Parameters::ContactMode::nip_angle &&
+            !parameters.mating_roll.covered && !problem->has_nip_fitted_mesh())
+          {
+            const std::vector<SurfaceNode> nodes = problem->surface_nodes();
+            for (const double theta0 : c.values)
+              nodes_in_zone(nodes, theta0);
+          }
       }
     catch (...)
       {

@@ -119,6 +119,23 @@ namespace rollnip
     return nodes.size() > 3 ? nodes[nodes.size() - 3].theta : 0.;
   }
 
+  unsigned int
+  nodes_in_zone(const std::vector<SurfaceNode> &nodes, const double theta0)
+  {
+    unsigned int m = 0;
+    while (m < nodes.size() &&
+           nodes[m].theta < theta0 * (1 - IterationControls::edge_slack))
+      ++m;
+    AssertThrow(m + 1 < nodes.size(),
+                ExcMessage("Contact: the contact zone reaches the end of the "
+                           "outer arc"));
+    AssertThrow(m >= 2,
+                ExcMessage("Contact/Half nip angle is too small for the mesh: "
+                           "refine near theta = 0 (at least two surface nodes "
+                           "must lie in the contact zone)"));
+    return m;
+  }
+
   InverseContact::Zone
   InverseContact::make_zone(const double theta0)
   {
@@ -141,17 +158,7 @@ namespace rollnip
     // nip-fitted mesh).
     Zone zone;
     zone.theta0 = theta0;
-    zone.m      = 0;
-    while (zone.m < nodes.size() &&
-           nodes[zone.m].theta < theta0 * (1 - IterationControls::edge_slack))
-      ++zone.m;
-    AssertThrow(zone.m + 1 < nodes.size(),
-                ExcMessage("Contact: the contact zone reaches the end of the "
-                           "outer arc"));
-    AssertThrow(zone.m >= 2,
-                ExcMessage("Contact/Half nip angle is too small for the mesh: "
-                           "refine near theta = 0 (at least two surface nodes "
-                           "must lie in the contact zone)"));
+    zone.m      = nodes_in_zone(nodes, theta0);
     for (unsigned int k = 0; k < zone.m; ++k)
       zone.knots.push_back(nodes[k].theta);
     zone.knots.push_back(theta0);
@@ -448,6 +455,15 @@ namespace rollnip
             result.converged = true;
             break;
           }
+        if (far_from_goal(result, gaps.residual))
+          {
+            result.converged   = true;
+            result.provisional = true;
+            pcout << "      (provisional: theta0 is far from the target; "
+                     "the control moves on)"
+                  << std::endl;
+            break;
+          }
         const Eigen::MatrixXd J = sensitivities(zone, gaps);
         Eigen::VectorXd       rhs(zone.m);
         for (unsigned int j = 0; j < zone.m; ++j)
@@ -459,6 +475,23 @@ namespace rollnip
     result.knots = zone.knots;
     finish(zone, result);
     return result;
+  }
+
+  bool
+  InverseContact::far_from_goal(const ContactResult &result,
+                                const double         residual) const
+  {
+    using namespace IterationControls;
+    if (!control_goal)
+      return false;
+    const ControlGoal &g    = *control_goal;
+    const double       q    = g.by_load ? result.nip_load : result.indentation;
+    const double       miss = std::abs(q / g.target - 1);
+    // The checks of a converged nip must hold already: a negative pressure
+    // or a penetration is for the control a failed theta0, not a miss.
+    return std::isfinite(miss) && miss > provisional_miss * g.tolerance &&
+           residual < provisional_fraction * miss && result.min_pressure >= 0 &&
+           result.penetration <= parameters.contact.tolerance;
   }
 
   void

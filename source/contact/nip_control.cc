@@ -475,6 +475,19 @@ namespace rollnip
     ContactResult r;
     if (!coarse_refusal.empty())
       return refuse(r, target, std::exchange(coarse_refusal, std::string()));
+    // Solves at a theta0 far from the target may stop early (provisional);
+    // the goal is cleared on every way out.
+    struct ClearGoal
+    {
+      NipSolver &solver;
+      ~ClearGoal()
+      {
+        solver.set_control_goal(std::nullopt);
+      }
+    } clear_goal{contact};
+    if (provisional_allowed)
+      contact.set_control_goal(
+        NipSolver::ControlGoal{by_load, target, c.control_tolerance});
     for (unsigned int it = 1; it <= c.max_iterations; ++it)
       {
         if (it > 1 && interrupt_requested(comm))
@@ -519,13 +532,14 @@ namespace rollnip
             continue;
           }
         const double q = controlled(r);
+        n_provisional += r.provisional;
         remember(theta, q);
         pcout << "Outer iteration " << it << ": theta0 = " << std::fixed
               << std::setprecision(6) << theta * deg << " deg gives "
               << quantity() << " = " << q << unit() << " (target " << target
-              << ")" << std::endl;
+              << ")" << (r.provisional ? " (provisional)" : "") << std::endl;
         closest = std::min(closest, std::abs(q / target - 1));
-        if (std::abs(q / target - 1) < c.control_tolerance)
+        if (!r.provisional && std::abs(q / target - 1) < c.control_tolerance)
           return r;
         if (q < target && theta >= theta_max * (1 - 1e-12))
           return refuse(r, target, beyond_mesh(theta_max));

@@ -20,8 +20,13 @@ namespace rollnip
     double      peak_pressure = 0; ///< max f [MPa]
     /// Deformed contact half-length along the surface, and the half-chord
     /// (the x2 coordinate of the deformed edge point) [mm].
-    double              half_arc = 0, half_chord = 0;
-    unsigned int        iterations = 0;
+    double       half_arc = 0, half_chord = 0;
+    unsigned int iterations = 0;
+    /// Stopped before the conformity tolerance because theta0 misses the
+    /// control's target by far more than the conformity residual left
+    /// (NipSolver::ControlGoal): good for the next secant step, never an
+    /// answer.
+    bool                provisional = false;
     std::vector<double> knots;  ///< reference angles of the pressure basis
     std::vector<double> values; ///< f at the knots [MPa]
 

@@ -48,6 +48,12 @@ namespace rollnip
     ContactResult
     solve(const double theta0) override;
 
+    void
+    set_control_goal(const std::optional<ControlGoal> &goal) override
+    {
+      control_goal = goal;
+    }
+
     /// Half the sector on the nip-fitted mesh, else the angle of the third
     /// surface node from the end.
     double
@@ -196,6 +202,12 @@ namespace rollnip
     Eigen::MatrixXd
     sensitivities(const Zone &zone, const Gaps &gaps);
 
+    /// Whether the iterate of @p result (conformity residual @p residual)
+    /// misses the control goal by so much more than that residual that
+    /// converging it further would not move the control's next theta0.
+    bool
+    far_from_goal(const ContactResult &result, const double residual) const;
+
     /// The first lines of the iteration's screen log.
     void
     print_header(const Zone &zone) const;
@@ -221,7 +233,15 @@ namespace rollnip
     double                        applied_theta0 = 0;
     /// The last converged nip.
     Converged converged;
+    /// Set by load or indentation control while it iterates.
+    std::optional<ControlGoal> control_goal;
   };
+
+  /// The outer-surface nodes @p nodes (by angle) below @p theta0 [rad],
+  /// the zone's pressure parameters; throws where theta0 leaves fewer than
+  /// two, or reaches the end of the arc (what a solve at theta0 refuses).
+  unsigned int
+  nodes_in_zone(const std::vector<SurfaceNode> &nodes, const double theta0);
 
   /// contact.txt (scalars and checks, then the lines @p more) and
   /// contact_pressure.csv (f at the knots) in @p directory, written by

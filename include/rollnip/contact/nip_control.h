@@ -47,11 +47,30 @@ namespace rollnip
           const double guess       = 0,
           const double guess_slope = 0);
 
+    /// Whether solves at a theta0 far from the target may stop early
+    /// (on by default). A provisional solve's q depends on the state it
+    /// started from, and so, within Contact/Control tolerance, does the
+    /// answer; a control whose starting states differ with the number of
+    /// processes (the error estimate's companion) turns it off.
+    void
+    allow_provisional(const bool allow)
+    {
+      provisional_allowed = allow;
+    }
+
     /// Contact solves (inverse iterations) run so far, failed ones too.
     unsigned int
     n_contact_solves() const
     {
       return n_solves;
+    }
+
+    /// Of those, the ones stopped early at a theta0 far from the target
+    /// (ContactResult::provisional).
+    unsigned int
+    n_provisional_solves() const
+    {
+      return n_provisional;
     }
 
     /// Contact solves on the level-0 scene for first guesses so far.
@@ -171,8 +190,10 @@ namespace rollnip
     const Parameters::AllParameters &parameters;
     const bool                       by_load;
     std::vector<Point>               converged; ///< sorted by theta
-    unsigned int                     n_solves = 0;
-    unsigned int                     n_coarse = 0;
+    unsigned int                     n_solves            = 0;
+    unsigned int                     n_provisional       = 0;
+    bool                             provisional_allowed = true;
+    unsigned int                     n_coarse            = 0;
     /// The slope of log q against log theta0 of the level-0 scene at the
     /// cold target hint_target, 0 if none: the secant's slope while one
     /// nip of that target has converged.

@@ -6,6 +6,7 @@
 #include <rollnip/contact/contact_result.h>
 #include <rollnip/scene/scene_description.h>
 
+#include <optional>
 #include <string>
 
 namespace rollnip
@@ -20,6 +21,25 @@ namespace rollnip
   {
   public:
     virtual ~NipSolver() = default;
+
+    /// The target of load or indentation control while it iterates on
+    /// theta0: a solver may then end a solve early, marked provisional,
+    /// once the theta0 misses the target by far more than its conformity
+    /// residual (the control leaves that theta0 anyway).
+    struct ControlGoal
+    {
+      bool   by_load;   ///< P, else u0
+      double target;    ///< [N/mm] or [mm]
+      double tolerance; ///< Contact/Control tolerance (relative)
+    };
+
+    /// Sets (or with nullopt clears) the goal; ignored by solvers that
+    /// always converge fully.
+    virtual void
+    set_control_goal(const std::optional<ControlGoal> &goal)
+    {
+      (void)goal;
+    }
 
     /// The nip at the reference half nip angle @p theta0 [rad]. A nip that
     /// does not converge leaves the state of the last converged one.
