@@ -36,6 +36,32 @@ namespace rollnip
     /// difference divides by the product of the gaps.
     constexpr double min_curvature_spread = 0.02;
 
+    /// While the control iterates, solves at a theta0 far from the target
+    /// may stop early (provisional) if @p allowed; the goal is cleared on
+    /// every way out.
+    class GoalScope
+    {
+    public:
+      GoalScope(NipSolver                    &solver,
+                const bool                    allowed,
+                const NipSolver::ControlGoal &goal)
+          : solver(solver)
+      {
+        if (allowed)
+          solver.set_control_goal(goal);
+      }
+      ~GoalScope()
+      {
+        solver.set_control_goal(std::nullopt);
+      }
+      GoalScope(const GoalScope &) = delete;
+      GoalScope &
+      operator=(const GoalScope &) = delete;
+
+    private:
+      NipSolver &solver;
+    };
+
     /// Marks the message of a contact solve that stalled on round-off
     /// (InverseContact::damp()).
     const std::string stalled_on_round_off = "stalled on round-off";
@@ -475,19 +501,9 @@ namespace rollnip
     ContactResult r;
     if (!coarse_refusal.empty())
       return refuse(r, target, std::exchange(coarse_refusal, std::string()));
-    // Solves at a theta0 far from the target may stop early (provisional);
-    // the goal is cleared on every way out.
-    struct ClearGoal
-    {
-      NipSolver &solver;
-      ~ClearGoal()
-      {
-        solver.set_control_goal(std::nullopt);
-      }
-    } clear_goal{contact};
-    if (provisional_allowed)
-      contact.set_control_goal(
-        NipSolver::ControlGoal{by_load, target, c.control_tolerance});
+    const GoalScope goal(contact,
+                         provisional_allowed,
+                         {by_load, target, c.control_tolerance});
     for (unsigned int it = 1; it <= c.max_iterations; ++it)
       {
         if (it > 1 && interrupt_requested(comm))
