@@ -94,6 +94,22 @@ namespace rollnip
       return s.str();
     }
 
+    /// Why a target is out of reach when the contact solve failed at
+    /// @p theta [rad] for @p why, and even the steepest rise of the
+    /// @p quantity below it falls short.
+    std::string
+    steepest_rise_short(const double       theta,
+                        const std::string &quantity,
+                        const std::string &why)
+    {
+      std::ostringstream s;
+      s << std::setprecision(6)
+        << "the contact iteration fails at theta0 = " << theta * deg
+        << " deg, and below it even the steepest rise of " << quantity
+        << " with theta0 falls short (" << why << ")";
+      return s.str();
+    }
+
     /// Why the iteration on theta0 ended without meeting its target:
     /// @p closest is the nearest relative miss of a converged nip (inf if
     /// none converged), @p last the last failed solve's message.
@@ -528,15 +544,9 @@ namespace rollnip
                             "just above the largest converged one (" +
                               r.message + ")");
             if (beyond_steepest_rise(target, theta))
-              {
-                std::ostringstream why;
-                why << std::setprecision(6)
-                    << "the contact iteration fails at theta0 = " << theta * deg
-                    << " deg, and below it even the steepest "
-                    << "rise of " << quantity() << " with theta0 falls short ("
-                    << r.message << ")";
-                return refuse(r, target, why.str());
-              }
+              return refuse(r,
+                            target,
+                            steepest_rise_short(theta, quantity(), r.message));
             const double next = below > 0 ? 0.5 * (below + theta) : 0.5 * theta;
             if (next < min_step_back * first_theta)
               return stop_short(
