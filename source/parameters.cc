@@ -537,7 +537,8 @@ namespace rollnip
         "Increment tolerance",
         "1e-8",
         Patterns::Double(0.),
-        "... and |du| / |u| of the last Newton update is below "
+        "... and |du| / |u| of the last Newton update, or of a chord step "
+        "with the last tangent after it (doc/intro.md, section 5), is below "
         "this");
       declare_documented(prm,
                          "Constraint tolerance",

@@ -176,6 +176,18 @@ namespace rollnip
     {
       return linear_solver.gmres_iterations();
     }
+    /// Newton solves that converged with a chord step.
+    unsigned int
+    chord_steps() const
+    {
+      return newton.n_chord_steps;
+    }
+    /// e_u of the chord step that ended the last Newton solve (0: none).
+    double
+    last_chord_update() const
+    {
+      return newton.last_chord_update;
+    }
     const TrilinosWrappers::MPI::Vector &
     owned_solution() const override
     {

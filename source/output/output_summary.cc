@@ -37,6 +37,7 @@ namespace rollnip
           << "load_steps = " << s.steps.size() << '\n'
           << "newton_iterations = " << n_newton << '\n'
           << "cutbacks = " << s.cutbacks << '\n'
+          << "chord_steps = " << s.chord_steps << '\n'
           << "assemblies = " << s.assemblies << '\n'
           << "linear_solves = " << s.linear_solves << '\n'
           << "symbolic_factorisations = " << s.symbolic_factorisations << '\n'

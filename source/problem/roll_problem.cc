@@ -114,6 +114,7 @@ namespace rollnip
     const RunStatistics statistics{stepper.log(),
                                    newton.log(),
                                    stepper.n_cutbacks(),
+                                   newton.n_chord_steps,
                                    roll_body.n_assemblies(),
                                    linear_solver.n_factorizations(),
                                    linear_solver.n_symbolic_analyses(),

@@ -100,6 +100,7 @@ namespace rollnip
   {
     const TrilinosWrappers::MPI::Vector start(body.owned_solution());
     TrilinosWrappers::MPI::Vector       update(start);
+    last_chord_update = 0;
     // J <= 0 means an inverted cell in finite strain; in linear theory J
     // of I + grad u has no meaning and is not checked.
     const bool check_J = !body.materials().is_linear();
@@ -139,7 +140,8 @@ namespace rollnip
         if (broken())
           break;
         stalled = decreased ? 0 : stalled + 1;
-        if (converged(errors, e_u))
+        if (converged(errors, e_u) ||
+            (converged(errors, 0.) && chord_step(load_fraction, errors, min_J)))
           {
             last_iterations = it;
             last_residual   = errors.e_R;
@@ -194,6 +196,56 @@ namespace rollnip
            (e_u < parameters.increment_tolerance ||
             errors.e_R < IterationControls::residual_only_convergence *
                            parameters.residual_tolerance);
+  }
+
+  bool
+  NewtonSolver::chord_step(const double load_fraction,
+                           Errors      &errors,
+                           double      &min_J)
+  {
+    const TrilinosWrappers::MPI::Vector before(body.owned_solution());
+    TrilinosWrappers::MPI::Vector       rhs(body.residual());
+    rhs *= -1.;
+    TrilinosWrappers::MPI::Vector update(rhs);
+    update = 0;
+    try
+      {
+        linear_solver.solve(body, rhs, update);
+      }
+    catch (const std::exception &)
+      {
+        // Only GMRES fails softly; a full Newton iteration follows.
+        if (!linear_solver.is_iterative())
+          throw;
+        return false;
+      }
+    const double u_norm = before.l2_norm();
+    const double e_u    = update.l2_norm() / (u_norm > 0 ? u_norm : 1.);
+    if (!(e_u < parameters.increment_tolerance))
+      return false;
+    TrilinosWrappers::MPI::Vector trial(before);
+    trial += update;
+    body.set_solution(trial);
+    const double new_J      = body.assemble(load_fraction, false);
+    const Errors new_errors = measure();
+    const bool   check_J    = !body.materials().is_linear();
+    const bool   done = (!check_J || new_J > 0) && converged(new_errors, e_u);
+    if (parameters.verbose)
+      pcout << "            chord " << std::scientific << std::setprecision(3)
+            << new_errors.e_R << "     " << new_errors.e_J << "     " << e_u
+            << (done ? "" : "   (not taken)") << std::endl;
+    if (!done)
+      {
+        // Back to the Newton iterate: the next iteration starts from it.
+        body.set_solution(before);
+        body.assemble(load_fraction, false);
+        return false;
+      }
+    errors = new_errors;
+    min_J  = new_J;
+    ++n_chord_steps;
+    last_chord_update = e_u;
+    return true;
   }
 
   void

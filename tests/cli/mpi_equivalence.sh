@@ -130,7 +130,7 @@ if [ -d "out_serial/${results[0]}/mating_roll" ]; then
 fi
 for dir in out_serial out_parallel; do
   for r in "${results[@]}"; do
-    grep -v -E '^([a-z_]*wall_time_s|time_[a-z_]*_s|mpi_processes|threads|gmres_iterations|gmres_solves|assemblies|linear_solves) =' \
+    grep -v -E '^([a-z_]*wall_time_s|time_[a-z_]*_s|mpi_processes|threads|gmres_iterations|gmres_solves|assemblies|linear_solves|chord_steps) =' \
       "$dir/$r/summary.txt" > "$dir/$r/summary_compared.txt"
   done
 done

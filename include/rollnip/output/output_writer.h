@@ -23,13 +23,14 @@ namespace rollnip
     const std::vector<StepRecord>   &steps;
     const std::vector<NewtonRecord> &newton;
     unsigned int                     cutbacks;
-    unsigned int                     assemblies;
-    unsigned int                     linear_solves;
-    unsigned int                     symbolic_factorisations;
-    unsigned int                     gmres_iterations;
-    unsigned int                     gmres_solves;
-    double run_wall_time;        ///< [s] since the problem was built
-    double last_solve_wall_time; ///< [s] of the last load-stepping solve
+    unsigned int chord_steps; ///< Newton's (newton_solver.h)
+    unsigned int assemblies;
+    unsigned int linear_solves;
+    unsigned int symbolic_factorisations;
+    unsigned int gmres_iterations;
+    unsigned int gmres_solves;
+    double       run_wall_time;        ///< [s] since the problem was built
+    double       last_solve_wall_time; ///< [s] of the last load-stepping solve
     std::map<std::string, double> times; ///< [s] per timer section
   };
 

@@ -32,7 +32,13 @@ namespace rollnip
    *   e_R = |R_u| / |F_ext|,  e_J = sum_K |int_K (J - 1)| / |Omega|,
    *   e_u = |du| / |u|  (Euclidean norms of nodal vectors);
    * a step converges when e_R and e_J are below their tolerances and
-   * either e_u is below its tolerance or e_R is far below its own. The
+   * either e_u is below its tolerance or e_R is far below its own. A
+   * step that meets all but e_u is followed by a chord step (the last
+   * tangent's factorisation or preconditioner applied to the new
+   * residual, and a residual assembly), whose update is tested
+   * in the same way; it replaces the Newton iteration that would mostly
+   * confirm convergence, and has its accuracy (Deuflhard, Newton Methods
+   * for Nonlinear Problems, 2004, sections 1.2 and 2.1). The
    * line search halves the step while the merit sqrt(e_R^2 + e_J^2) does
    * not decrease or some J <= 0.
    */
@@ -52,6 +58,10 @@ namespace rollnip
     /// Iterations and e_R of the last converged solve.
     unsigned int last_iterations = 0;
     double       last_residual   = 0;
+    /// Solves that converged with a chord step instead of an iteration,
+    /// and e_u of the chord step that ended the last solve (0: none).
+    unsigned int n_chord_steps     = 0;
+    double       last_chord_update = 0;
 
     /// Why the last failed solve failed, in words for the user.
     std::string last_failure;
@@ -89,6 +99,13 @@ namespace rollnip
     /// The convergence test of the class documentation.
     bool
     converged(const Errors &errors, const double e_u) const;
+
+    /// The chord step of the class documentation at @p load_fraction:
+    /// true if it converged (the state moved, @p errors and @p min_J of
+    /// the new state); false with the state, @p errors and @p min_J as
+    /// they were.
+    bool
+    chord_step(const double load_fraction, Errors &errors, double &min_J);
 
     /// Sets last_failure for a failed solve that ended with @p errors
     /// (@p inverted: some J <= 0), unless a cause is already set.
