@@ -364,9 +364,10 @@ namespace rollnip
   InverseContact::sensitivities(const Zone &zone, const Gaps &gaps)
   {
     // The tangent is the one Newton factorised last in carry_pressure(),
-    // one Newton update away from the converged state: within its
-    // tolerance of the tangent there, which would cost another assembly
-    // and factorisation and change no converged nip.
+    // one Newton update away from the converged state (two after a chord
+    // step): close to the tangent there, which would cost another
+    // assembly and factorisation and change no converged nip, only the
+    // rate of the contact iteration a little.
     const auto                   &cs = *counter_surface;
     const double                  u0 = gaps.u0;
     TrilinosWrappers::MPI::Vector du(body.owned_solution());

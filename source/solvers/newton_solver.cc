@@ -219,12 +219,18 @@ namespace rollnip
           throw;
         return false;
       }
-    const double u_norm = before.l2_norm();
-    const double e_u    = update.l2_norm() / (u_norm > 0 ? u_norm : 1.);
-    if (!(e_u < parameters.increment_tolerance))
-      return false;
+    // e_u as Newton measures it, relative to the state it leads to.
     TrilinosWrappers::MPI::Vector trial(before);
     trial += update;
+    const double u_norm = trial.l2_norm();
+    const double e_u    = update.l2_norm() / (u_norm > 0 ? u_norm : 1.);
+    if (!(e_u < parameters.increment_tolerance))
+      {
+        if (parameters.verbose)
+          pcout << "            chord update " << std::scientific
+                << std::setprecision(3) << e_u << " (not taken)" << std::endl;
+        return false;
+      }
     body.set_solution(trial);
     const double new_J      = body.assemble(load_fraction, false);
     const Errors new_errors = measure();
@@ -236,9 +242,9 @@ namespace rollnip
             << (done ? "" : "   (not taken)") << std::endl;
     if (!done)
       {
-        // Back to the Newton iterate: the next iteration starts from it.
+        // Back to the Newton iterate: the next iteration starts from it
+        // and assembles there (its residual and tangent) first.
         body.set_solution(before);
-        body.assemble(load_fraction, false);
         return false;
       }
     errors = new_errors;

@@ -25,7 +25,7 @@ namespace rollnip
    * on the line of centres, which defines u0) and at theta0 itself. Newton
    * on the values: the gap sensitivities come from linearised solves with
    * the tangent that Newton factorised last on the way to the converged
-   * state (one Newton update from it); the small dense system is solved
+   * state (one or two Newton updates from it); the small dense system is solved
    * with Eigen.
    */
   class InverseContact : public NipSolver

@@ -35,10 +35,13 @@ namespace rollnip
    * either e_u is below its tolerance or e_R is far below its own. A
    * step that meets all but e_u is followed by a chord step (the last
    * tangent's factorisation or preconditioner applied to the new
-   * residual, and a residual assembly), whose update is tested
-   * in the same way; it replaces the Newton iteration that would mostly
-   * confirm convergence, and has its accuracy (Deuflhard, Newton Methods
-   * for Nonlinear Problems, 2004, sections 1.2 and 2.1). The
+   * residual, and a residual assembly), whose update and end state are
+   * tested in the same way (and J > 0); it replaces the Newton iteration
+   * that would mostly confirm convergence. Its own update estimates the
+   * state's error before it (Deuflhard, Newton Methods for Nonlinear
+   * Problems, 2004, section 2.1); the error left after it is about that
+   * update times the last Newton update, where a Newton iteration would
+   * leave its square. It is not an iteration in log(). The
    * line search halves the step while the merit sqrt(e_R^2 + e_J^2) does
    * not decrease or some J <= 0.
    */
