@@ -21,14 +21,7 @@ namespace
   Result
   solve(const std::string &element, const std::string &method)
   {
-    const auto parameters = testing::parameters_from_string(
-      "subsection Mesh\n set Global refinements = 1\nend\n"
-      "subsection Load\n set p0 = 0.5\nend\n"
-      "subsection Discretization\n set Element = " +
-      element +
-      "\nend\n"
-      "subsection Linear solver\n set Method = " +
-      method + "\n set Max iterations = 2000\nend\n");
+    const auto  parameters = testing::parabolic_pressure_scene(element, method);
     RollProblem problem(parameters, MPI_COMM_WORLD);
     problem.setup();
     problem.set_step_log(false);

@@ -32,18 +32,13 @@ namespace
         const std::string &increment,
         const std::string &constraint)
   {
-    const auto parameters = testing::parameters_from_string(
-      "subsection Mesh\n set Global refinements = 1\nend\n"
-      "subsection Load\n set p0 = 0.5\nend\n"
-      "subsection Discretization\n set Element = " +
-      element +
-      "\nend\n"
-      "subsection Linear solver\n set Method = " +
-      method +
-      "\n set Max iterations = 2000\n set Iterative tolerance = 1e-12\nend\n"
+    const auto parameters = testing::parabolic_pressure_scene(
+      element,
+      method,
+      "subsection Linear solver\n set Iterative tolerance = 1e-12\nend\n"
       "subsection Nonlinear solver\n set Residual tolerance = " +
-      residual + "\n set Increment tolerance = " + increment +
-      "\n set Constraint tolerance = " + constraint + "\nend\n");
+        residual + "\n set Increment tolerance = " + increment +
+        "\n set Constraint tolerance = " + constraint + "\nend\n");
     RollProblem problem(parameters, MPI_COMM_WORLD);
     problem.setup();
     problem.set_step_log(false);

@@ -40,6 +40,24 @@ namespace rollnip
       return p;
     }
 
+    /// The default pressure scene (the parabolic pressure, p0 = 0.5 MPa)
+    /// at mesh level 1 with @p element and Linear solver/Method @p method
+    /// (GMRES allowed 2000 iterations), then the .prm text @p more.
+    inline Parameters::AllParameters
+    parabolic_pressure_scene(const std::string &element,
+                             const std::string &method,
+                             const std::string &more = "")
+    {
+      return parameters_from_string(
+        "subsection Mesh\n set Global refinements = 1\nend\n"
+        "subsection Load\n set p0 = 0.5\nend\n"
+        "subsection Discretization\n set Element = " +
+        element +
+        "\nend\n"
+        "subsection Linear solver\n set Method = " +
+        method + "\n set Max iterations = 2000\nend\n" + more);
+    }
+
     /// Counts failed checks; the test's exit code.
     struct Checker
     {
