@@ -55,6 +55,8 @@ import sys
 import tempfile
 import time
 
+from prm_run import run_prm
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ROLLNIP = os.environ.get("ROLLNIP_BIN", os.path.join(ROOT, "build", "rollnip"))
 BASE = os.path.join(ROOT, "parameters", "batra1980.prm")
@@ -121,24 +123,11 @@ subsection Accuracy
   set Error estimate = {'true' if estimate else 'false'}
 {accuracy}
 end
-subsection Output
-  set Directory = {tmp}/out
-  set Write VTU = false
-  set Print timing = false
-end
 """
-    shutil.rmtree(os.path.join(tmp, "out"), ignore_errors=True)
-    prm = os.path.join(tmp, "run.prm")
-    with open(prm, "w") as f:
-        f.write(text)
-    t0 = time.perf_counter()
-    r0 = resource.getrusage(resource.RUSAGE_CHILDREN)
-    p = subprocess.run([ROLLNIP, prm], capture_output=True, text=True)
-    r1 = resource.getrusage(resource.RUSAGE_CHILDREN)
-    wall = time.perf_counter() - t0
+    wall, cpu, p = run_prm(ROLLNIP, tmp, text)
     if log is not None:
         log["stdout"] = p.stdout
-        log["cpu"] = (r1.ru_utime - r0.ru_utime) + (r1.ru_stime - r0.ru_stime)
+        log["cpu"] = cpu
     if p.returncode != 0:
         if not must_converge:
             return None, None, 0, wall

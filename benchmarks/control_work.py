@@ -23,12 +23,11 @@ median wall time of the whole process [s].
 
 import os
 import re
-import shutil
 import statistics
-import subprocess
 import sys
 import tempfile
-import time
+
+from prm_run import run_prm
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BASE = os.path.join(ROOT, "parameters", "batra1980.prm")
@@ -70,19 +69,8 @@ subsection Contact
   set Values = {values}
   set Compare with linear theory = false
 end
-{accuracy}subsection Output
-  set Directory = {directory}/out
-  set Write VTU = false
-  set Print timing = false
-end
-"""
-    shutil.rmtree(os.path.join(directory, "out"), ignore_errors=True)
-    prm = os.path.join(directory, "run.prm")
-    with open(prm, "w") as f:
-        f.write(text)
-    t0 = time.perf_counter()
-    p = subprocess.run([binary, prm], capture_output=True, text=True)
-    wall = time.perf_counter() - t0
+{accuracy}"""
+    wall, _, p = run_prm(binary, directory, text)
     if p.returncode != 0:
         fail(f"{binary} failed on '{name}': {p.stderr.strip()}")
     solves = sum(1 for line in p.stdout.splitlines()

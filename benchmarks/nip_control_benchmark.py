@@ -29,12 +29,13 @@ import csv
 import math
 import os
 import re
-import shutil
 import statistics
 import subprocess
 import sys
 import tempfile
 import time
+
+from prm_run import run_prm
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ROLLNIP = os.environ.get("ROLLNIP_BIN", os.path.join(ROOT, "build", "rollnip"))
@@ -62,19 +63,9 @@ subsection Contact
   set Values = {', '.join(f'{v:.6g}' for v in values)}
   set Compare with linear theory = false
 end
-subsection Output
-  set Directory = {directory}/out
-  set Write VTU = false
-  set Print timing = false
-end
 """
-    shutil.rmtree(os.path.join(directory, "out"), ignore_errors=True)
-    prm = os.path.join(directory, "run.prm")
-    with open(prm, "w") as f:
-        f.write(text)
-    t0 = time.perf_counter()
-    p = subprocess.run([ROLLNIP, prm], capture_output=True, text=True)
-    return time.perf_counter() - t0, p
+    wall, _, p = run_prm(ROLLNIP, directory, text)
+    return wall, p
 
 
 def solves_per_target(stdout):
