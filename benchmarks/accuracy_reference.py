@@ -35,7 +35,9 @@ Usage: [ROLLNIP_SCENE=run30|layered] [ROLLNIP_REFERENCE=fixed|fitted]
                 targets, e.g. ROLLNIP_MODES="nip angle" ROLLNIP_TARGETS="1 %";
                 ROLLNIP_QUANTITIES="P, 2b" targets b too and gives its
                 true error against Q2-P1 with 6 edge refinements at levels
-                2 and 3, extrapolated
+                2 and 3, extrapolated; ROLLNIP_BEFORE=<another build> runs
+                it in turn with this one and adds its CPU time per nip
+                and the ratio
     KEY=VALUE   extra Mesh entries for the runs under test, e.g.
                 "Nip cells=6"
 
@@ -50,6 +52,7 @@ import os
 import re
 import resource
 import shutil
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -92,14 +95,15 @@ def fail(message):
 
 def solve(tmp, element, level, fitting, mesh_extra=(), estimate=False,
           mode="indentation", values=None, keys=KEYS, tight=True,
-          must_converge=True, accuracy="", log=None):
+          must_converge=True, accuracy="", log=None, binary=None):
     """[values] and [estimated errors] at each target (keys, ERR_KEYS), and
     the DoFs and wall time of the run. The targets are U0 unless given
     (in the unit of the mode: mm, N/mm, deg); tight: control and
     conformity tolerances 1e-9, otherwise the parameter file's. A run
     that fails returns None for its values unless must_converge.
     accuracy: more lines of subsection Accuracy; log: a dict that gets
-    the run's standard output as "stdout" and its CPU time as "cpu"."""
+    the run's standard output as "stdout" and its CPU time as "cpu";
+    binary: another rollnip than ROLLNIP."""
     values = U0 if values is None else values
     tolerances = """
   set Control tolerance = 1e-9
@@ -124,7 +128,7 @@ subsection Accuracy
 {accuracy}
 end
 """
-    wall, cpu, p = run_prm(ROLLNIP, tmp, text)
+    wall, cpu, p = run_prm(binary or ROLLNIP, tmp, text)
     if log is not None:
         log["stdout"] = p.stdout
         log["cpu"] = cpu
@@ -344,8 +348,11 @@ def target_runs(tmp):
     start, start_cpu = start_up_seconds(), start_up_seconds(cpu=True)
     print(f"start-up (rollnip --help, median of 3): {start:.2f} s wall,"
           f" {start_cpu:.2f} s CPU")
+    before = os.environ.get("ROLLNIP_BEFORE")
     header = ["mode", "target", "chosen", "runs", "s per nip",
               "CPU s per nip", "P (u0) err"] + (["b err"] if with_b else [])
+    if before:
+        header += ["before: CPU s per nip", "CPU after / before"]
     modes = os.environ.get("ROLLNIP_MODES", ",".join(FRONT_MODES)).split(",")
     targets_asked = os.environ.get("ROLLNIP_TARGETS",
                                    "1 %,0.1 %,0.01 %").split(",")
@@ -359,15 +366,24 @@ def target_runs(tmp):
                              for q in asked)
         keys = (FRONT_KEYS[column],) + (("half_chord_mm",) if with_b else ())
         for target in targets_asked:
-            walls, cpus = [], []
+            walls, cpus, before_cpus = [], [], []
+            accuracy = (f"  set Target = {target}\n"
+                        f"  set Target quantities = {quantity}")
             for _ in range(repeat):
+                # The two builds in turn, so that both see the machine's
+                # state of the same minutes.
+                if before:
+                    other = {}
+                    solve(tmp, "Q1-P0", 2, "on", mode=mode, values=targets,
+                          keys=keys, tight=False, must_converge=False,
+                          accuracy=accuracy, log=other, binary=before)
+                    before_cpus.append(other["cpu"])
                 log = {}
                 got, _, _, wall = solve(
                     tmp, "Q1-P0", 2, "on", mode=mode, values=targets,
                     keys=keys, tight=False,
                     must_converge=False,
-                    accuracy=f"  set Target = {target}\n"
-                             f"  set Target quantities = {quantity}", log=log)
+                    accuracy=accuracy, log=log)
                 walls.append(wall)
                 cpus.append(log["cpu"])
                 if got is None:
@@ -398,6 +414,11 @@ def target_runs(tmp):
                        f"{err:.1e}"]
                 if with_b:
                     row.append(f"{max(abs(a[1] / b - 1) for a, b in zip(got, b_ref)):.1e}")
+            if before:
+                b_cpu = max(statistics.median(before_cpus) - start_cpu, 0)
+                a_cpu = max(cpu - start_cpu, 0)
+                row += [f"{b_cpu / len(targets):.2f}",
+                        f"{a_cpu / b_cpu:.2f}" if b_cpu > 0 else "-"]
             rows.append(row)
             print("| " + " | ".join(row) + " |", flush=True)
     return header, rows

@@ -22,9 +22,9 @@ way (for Q1-P0 runs); they differ by 3e-6 to 2e-5.
 With --target it then runs Accuracy/Target = 1 %, 0.1 % and 0.01 % on P
 at the three nips (one thread; CPU time per nip of the whole run, start-up
 included, median of ROLLNIP_REPEAT runs, 1 by default) and measures the
-answer against the reference.
+answer against the reference; --target-only runs those alone.
 
-Usage: python3 benchmarks/edge_refinements.py [--target]
+Usage: python3 benchmarks/edge_refinements.py [--target | --target-only]
 Uses build/rollnip or $ROLLNIP_BIN (about 5 min on one core). Prints
 Markdown tables.
 """
@@ -130,6 +130,9 @@ end
 
 
 def main():
+    if "--target-only" in sys.argv[1:]:
+        targets()
+        return
     with tempfile.TemporaryDirectory() as work:
         runs = {(e, k, m): [run(e, k, m, level, work) for level in range(n)]
                 for e, k, m, n in CASES}

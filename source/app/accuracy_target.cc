@@ -4,7 +4,6 @@
 #include <rollnip/app/accuracy_target.h>
 #include <rollnip/app/nip_study.h>
 #include <rollnip/output/atomic_file.h>
-#include <rollnip/output/silence_cerr.h>
 
 #include <algorithm>
 #include <cmath>
@@ -334,59 +333,53 @@ namespace rollnip
       return worst;
     }
 
-    /// Solves the sweep of @p p at its level and at the two below (in
-    /// extrapolation/level-K of the output directory, without VTU), all
-    /// without the error estimate's companion, and extrapolates each
-    /// nip's numbers at order 1 into @p a. The output directory holds
-    /// the finest level's files. Returns the exit code.
+    /// Solves the sweep of @p p at its level and at the two below, nip
+    /// by nip, each level from the one below (CoarserLevels), all without
+    /// the error estimate's companion, and extrapolates each nip's numbers
+    /// at order 1 into @p a. The output directory holds the finest
+    /// level's files, extrapolation/level-K the nip characteristic of
+    /// level K. Returns the exit code.
     int
     solve_extrapolated(Parameters::AllParameters p,
                        Attempt                  &a,
                        std::vector<NipRow>      &rows,
                        MPI_Comm                  communicator)
     {
-      p.accuracy.error_estimate              = false;
-      const unsigned int               level = p.mesh.global_refinements;
-      std::vector<std::vector<NipRow>> below;
-      for (const unsigned int k : {2u, 1u})
+      p.accuracy.error_estimate = false;
+      const unsigned int level  = p.mesh.global_refinements;
+      CoarserLevels      below;
+      for (const unsigned int k : {level - 2, level - 1})
         {
-          Parameters::AllParameters q = p;
-          q.mesh.global_refinements   = level - k;
-          q.output.directory = p.output.directory + "/extrapolation/level-" +
-                               std::to_string(level - k);
-          q.output.write_vtu = false;
-          below.emplace_back();
-          Timer timer;
-          int   code = 0;
-          {
-            // The coarser levels only feed the extrapolation: their log
-            // would bury the answer's on the screen (errors still go to
-            // std::cerr, the numbers to their files).
-            SilenceStream quiet(std::cout);
-            code = run_nip_study(q, communicator, &below.back());
-          }
-          if (code)
-            return code;
-          if (Utilities::MPI::this_mpi_process(communicator) == 0 &&
-              !below.back().empty())
-            std::cout << "Mesh level " << level - k << " ("
-                      << below.back().front().n_dofs
-                      << " DoFs): " << below.back().size() << " nip(s) in "
-                      << std::fixed << std::setprecision(2) << timer.wall_time()
-                      << " s, files in " << q.output.directory
-                      << std::defaultfloat << std::endl;
+          below.levels.push_back(k);
+          below.directories.push_back(
+            p.output.directory + "/extrapolation/level-" + std::to_string(k));
         }
-      if (const int code = run_nip_study(p, communicator, &rows))
+      const int code =
+        run_nip_study(p, communicator, &rows, nullptr, true, &below);
+      if (Utilities::MPI::this_mpi_process(communicator) == 0)
+        for (unsigned int i = 0; i < below.levels.size(); ++i)
+          if (!below.rows[i].empty())
+            std::cout << "Mesh level " << below.levels[i] << " ("
+                      << below.rows[i].front().n_dofs
+                      << " DoFs): " << below.rows[i].size() << " nip(s) in "
+                      << std::fixed << std::setprecision(2) << below.seconds[i]
+                      << " s, each from "
+                      << (i == 0 ? std::string("the nip before")
+                                 : "the same nip at level " +
+                                     std::to_string(below.levels[i - 1]))
+                      << ", nip characteristic in " << below.directories[i]
+                      << std::defaultfloat << std::endl;
+      if (code)
         return code;
-      AssertThrow(below[0].size() == rows.size() &&
-                    below[1].size() == rows.size(),
+      AssertThrow(below.rows[0].size() == rows.size() &&
+                    below.rows[1].size() == rows.size(),
                   ExcMessage("Accuracy/Target: the three mesh levels solved "
                              "different numbers of nips"));
       for (unsigned int i = 0; i < rows.size(); ++i)
         a.extrapolated.push_back(
           extrapolate_first_order(nip_numbers(rows[i]),
-                                  nip_numbers(below[1][i]),
-                                  nip_numbers(below[0][i]),
+                                  nip_numbers(below.rows[1][i]),
+                                  nip_numbers(below.rows[0][i]),
                                   p.discretization.element));
       return 0;
     }

@@ -148,6 +148,18 @@ namespace rollnip
                   << std::endl;
     }
 
+    /// Starts @p to from the converged nip of @p from, carried over to
+    /// its mesh, as its last converged nip; false, and nothing done,
+    /// where the meshes do not nest or the counter surface is a covered
+    /// roll (then @p to starts from its own last nip, as a sweep does).
+    bool
+    carry_nip(Scene &from, Scene &to)
+    {
+      auto *mine   = dynamic_cast<InverseContact *>(&to.nip_solver());
+      auto *theirs = dynamic_cast<InverseContact *>(&from.nip_solver());
+      return mine && theirs && mine->start_from(*theirs);
+    }
+
     /// The scene of the error estimate's companion solve: this one with
     /// both rolls' meshes one level coarser (one finer at level 0), no
     /// linear companion, no files.
@@ -221,6 +233,64 @@ namespace rollnip
         release();
       }
 
+      /// Where the primary's control starts: theta0 and d log q / d log
+      /// theta0 there (0: its own guess).
+      struct Guess
+      {
+        double theta0 = 0, slope = 0;
+      };
+
+      /**
+       * With the companion one level coarser, it goes first: solves the
+       * nip of @p target from its own nip before, with its own control
+       * converged in full, and hands it over to @p primary as that
+       * scene's last converged nip (carry_nip()), so that the finer mesh
+       * starts from the same nip, not from the one before; under load or
+       * indentation control the primary's control also starts from its
+       * theta0 and slope (returned). estimate() then takes these numbers.
+       * At level 0 (the companion finer) it does nothing: the companion
+       * then follows the primary.
+       */
+      Guess
+      lead(const double target, Scene &primary)
+      {
+        led = {};
+        if (!control || parameters.mesh.global_refinements > level)
+          return {};
+        led.active = true;
+        Guess guess;
+        Timer timer;
+        try
+          {
+            SilenceStream quiet(std::cout);
+            // Fully converged solves only: its answer must not depend on
+            // where it started (its nip before, on any number of
+            // processes).
+            control->allow_provisional(false);
+            NipRow c;
+            c.nonlinear = control->solve(target);
+            if (c.nonlinear.converged)
+              {
+                fill_nip_values(*scene, c);
+                led.numbers = nip_numbers(c);
+                carry_nip(*scene, primary);
+                if (parameters.contact.mode !=
+                    Parameters::ContactMode::nip_angle)
+                  guess = {c.nonlinear.theta0, control->local_slope(target)};
+              }
+            else
+              led.failure = c.nonlinear.message;
+          }
+        catch (const std::exception &error)
+          {
+            if (is_local_error(error))
+              throw;
+            led.failure = one_line_message(error);
+          }
+        led.seconds = timer.wall_time();
+        return guess;
+      }
+
       /// The error estimate of the converged nip @p row of @p primary,
       /// solved for @p target (a value of Contact/Values, in the program's
       /// units); @p slope is d log q / d log theta0 of the primary's
@@ -231,13 +301,14 @@ namespace rollnip
                Scene        &primary,
                const double  slope)
       {
-        const unsigned int other = parameters.mesh.global_refinements;
-        ErrorEstimate      e;
         if (!control)
           {
+            ErrorEstimate e;
             e.missing = unavailable;
             return e;
           }
+        if (led.active)
+          return estimate(row, led.numbers, led.failure, led.seconds);
         Timer       timer;
         NipNumbers  numbers;
         std::string failure;
@@ -256,6 +327,20 @@ namespace rollnip
               throw;
             failure = one_line_message(error);
           }
+        return estimate(row, numbers, failure, timer.wall_time());
+      }
+
+    private:
+      /// The estimate of @p row from the companion's @p numbers, or why
+      /// there is none (@p failure), after @p seconds of its solves.
+      ErrorEstimate
+      estimate(const NipRow      &row,
+               const NipNumbers  &numbers,
+               const std::string &failure,
+               const double       seconds) const
+      {
+        const unsigned int other = parameters.mesh.global_refinements;
+        ErrorEstimate      e;
         if (failure.empty())
           e = estimate_errors(nip_numbers(row),
                               numbers,
@@ -267,11 +352,10 @@ namespace rollnip
           e.missing = "the same nip at mesh level " + std::to_string(other) +
                       " did not converge (" + failure + ")";
         e.companion_level   = other;
-        e.companion_seconds = timer.wall_time();
+        e.companion_seconds = seconds;
         return e;
       }
 
-    private:
       /// The numbers of the converged nip, solved for @p target with the
       /// control from the primary's @p row and @p slope; empty, or why it
       /// failed.
@@ -350,17 +434,11 @@ namespace rollnip
         return true;
       }
 
-      /// The state of the primary's converged nip on this scene's mesh,
-      /// with its contact pressure and theta0, as the last converged nip
-      /// of the contact solver; false, and nothing done, where the meshes
-      /// do not nest or the counter surface is a covered roll (then the
-      /// companion starts from its last nip, as a sweep does).
+      /// The primary's converged nip as this scene's last (carry_nip()).
       bool
       warm_start(Scene &primary)
       {
-        auto *mine   = dynamic_cast<InverseContact *>(&scene->nip_solver());
-        auto *theirs = dynamic_cast<InverseContact *>(&primary.nip_solver());
-        return mine && theirs && mine->start_from(*theirs);
+        return carry_nip(primary, *scene);
       }
 
       /// Destroys the companion's objects, its timer silenced (it would
@@ -377,9 +455,135 @@ namespace rollnip
       const Parameters::AllParameters parameters;
       const unsigned int              level;       ///< of the answer
       std::string                     unavailable; ///< why, if unbuilt
-      std::unique_ptr<Scene>          scene;
-      std::unique_ptr<NipControl>     control;
+      /// The nip lead() solved, if it did.
+      struct Led
+      {
+        bool        active = false;
+        NipNumbers  numbers{};
+        std::string failure;
+        double      seconds = 0; ///< wall time [s]
+      } led;
+      std::unique_ptr<Scene>      scene;
+      std::unique_ptr<NipControl> control;
     };
+
+    /**
+     * The scenes of CoarserLevels, without a word on the screen or a
+     * file of their own. A nip from the same nip one level coarser costs
+     * far less than one from the last nip (a few Newton steps and two or
+     * three contact iterations: the pressure and the state are there),
+     * and the coarsest level is the cheapest one to take that step.
+     */
+    class LevelLadder
+    {
+    public:
+      LevelLadder(const Parameters::AllParameters &p,
+                  CoarserLevels                   &coarser,
+                  const MPI_Comm                   communicator)
+          : coarser(coarser)
+      {
+        coarser.rows.assign(coarser.levels.size(), {});
+        coarser.seconds.assign(coarser.levels.size(), 0.);
+        SilenceStream quiet(std::cout);
+        try
+          {
+            build(p, communicator);
+          }
+        catch (...)
+          {
+            release();
+            throw;
+          }
+      }
+
+      ~LevelLadder()
+      {
+        release();
+      }
+
+      /// The nip of Contact/Values @p target on every level, coarsest
+      /// first; empty, or why a level stopped.
+      std::string
+      solve(const double target);
+
+      /// The finest level's nip as the last converged nip of @p scene.
+      void
+      hand_over(Scene &scene)
+      {
+        if (!scenes.empty())
+          carry_nip(*scenes.back(), scene);
+      }
+
+      /// Each level's nip characteristic in its directory (collective).
+      void
+      write_tables(const MPI_Comm communicator);
+
+    private:
+      /// A scene and a control per level.
+      void
+      build(const Parameters::AllParameters &p, const MPI_Comm communicator)
+      {
+        for (const unsigned int level : coarser.levels)
+          {
+            Parameters::AllParameters q = p;
+            q.mesh.global_refinements   = level;
+            // The mating roll follows the roll, level for level.
+            q.mating_roll.mesh.global_refinements -=
+              std::min(q.mating_roll.mesh.global_refinements,
+                       p.mesh.global_refinements - level);
+            q.contact.compare_linear  = false;
+            q.output.print_timing     = false;
+            q.output.write_vtu        = false;
+            q.output.write_csv        = false;
+            q.accuracy.error_estimate = false;
+            // The scene and its control keep references to their
+            // parameters: each set has its own place.
+            parameters.push_back(
+              std::make_unique<const Parameters::AllParameters>(q));
+            scenes.push_back(
+              std::make_unique<Scene>(*parameters.back(), communicator));
+            controls.push_back(
+              std::make_unique<NipControl>(scenes.back()->nip_solver(),
+                                           *parameters.back()));
+          }
+      }
+
+      /// Destroys the controls and silences the scenes' timers (they
+      /// would report on an exception in flight).
+      void
+      release()
+      {
+        controls.clear();
+        for (auto &s : scenes)
+          s->silence_timers();
+      }
+
+      CoarserLevels                                                &coarser;
+      std::vector<std::unique_ptr<const Parameters::AllParameters>> parameters;
+      std::vector<std::unique_ptr<Scene>>                           scenes;
+      std::vector<std::unique_ptr<NipControl>>                      controls;
+    };
+
+    std::string
+    LevelLadder::solve(const double target)
+    {
+      SilenceStream quiet(std::cout);
+      for (unsigned int i = 0; i < scenes.size(); ++i)
+        {
+          Timer timer;
+          if (i > 0)
+            carry_nip(*scenes[i - 1], *scenes[i]);
+          NipRow row;
+          row.nonlinear = controls[i]->solve(target);
+          coarser.seconds[i] += timer.wall_time();
+          if (!row.nonlinear.converged)
+            return "mesh level " + std::to_string(coarser.levels[i]) + ": " +
+                   row.nonlinear.message;
+          fill_nip_values(*scenes[i], row);
+          coarser.rows[i].push_back(row);
+        }
+      return "";
+    }
 
     /// The estimate of @p row's errors as lines of contact.txt: one
     /// key = value per number, absolute, in the number's unit.
@@ -637,6 +841,19 @@ namespace rollnip
         }
     }
 
+
+    void
+    LevelLadder::write_tables(const MPI_Comm communicator)
+    {
+      for (unsigned int i = 0; i < parameters.size(); ++i)
+        write_nip_characteristic(coarser.rows[i],
+                                 false,
+                                 scenes[i]->description.roll.cover_thickness(),
+                                 coarser.directories[i],
+                                 communicator,
+                                 false);
+    }
+
     /// Both tables of @p rows, written (not printed) at the start of a
     /// sweep and after every nip, so that a run killed later (mpirun's
     /// SIGKILL after its SIGTERM, a second signal) keeps the nips that
@@ -730,16 +947,17 @@ namespace rollnip
       thermal.seconds = clock.wall_time();
     }
 
-    /// The nip of Contact/Values @p target into row.nonlinear, and for a
-    /// cover that softens as it heats its fixed point with the
-    /// temperature (soften_nip()); returns the wall time of the first
-    /// solve [s].
+    /// The nip of Contact/Values @p target into row.nonlinear, the
+    /// control starting from @p guess if it has one, and for a cover that
+    /// softens as it heats its fixed point with the temperature
+    /// (soften_nip()); returns the wall time of the first solve [s].
     double
     solve_nip(Scene                           &scene,
               NipControl                      &control,
               const Parameters::AllParameters &parameters,
               const Parameters::Rolling       *rolling,
               const double                     target,
+              const ErrorCompanion::Guess     &guess,
               NipRow                          &row,
               ThermalCoupling                 &thermal,
               CircleFactor                    &circle_factor)
@@ -750,7 +968,7 @@ namespace rollnip
         rolling && rolling->enabled && rolling->softening.active();
       if (soften)
         scene.roll().body().materials().set_modulus_factor({});
-      row.nonlinear        = control.solve(target);
+      row.nonlinear        = control.solve(target, guess.theta0, guess.slope);
       const double seconds = clock.wall_time();
       if (row.nonlinear.converged && soften)
         soften_nip(scene,
@@ -931,12 +1149,14 @@ namespace rollnip
     /// Solves the nips of Contact/Values in turn, evaluates and writes
     /// each, and adds the converged ones to @p rows, with their linear
     /// companions if @p linear is given and their error estimates if
-    /// @p companion is; returns why the sweep stopped, empty if it did not.
+    /// @p companion is, each nip solved on the levels of @p ladder first
+    /// if it is given; returns why the sweep stopped, empty if it did not.
     std::string
     sweep_nips(Scene                           &scene,
                NipControl                      &control,
                Scene                           *linear_scene,
                ErrorCompanion                  *companion,
+               LevelLadder                     *ladder,
                const Parameters::AllParameters &parameters,
                const Parameters::Rolling       *rolling,
                std::vector<NipRow>             &rows)
@@ -964,6 +1184,20 @@ namespace rollnip
           const std::string dir = sweep ? top + "/" + nip : top;
           const std::string vtu =
             "/solution-" + Utilities::int_to_string(n + 1, 4) + ".pvtu";
+          if (ladder)
+            {
+              const std::string stopped = ladder->solve(values[n]);
+              if (!stopped.empty())
+                {
+                  arm_interrupt_line("", "");
+                  return why_stopped(
+                    stopped, n + 1, values.size(), rows.size(), comm);
+                }
+              ladder->hand_over(scene);
+            }
+          const ErrorCompanion::Guess guess =
+            companion ? companion->lead(values[n], scene)
+                      : ErrorCompanion::Guess();
           NipRow          row;
           ThermalCoupling thermal;
           CircleFactor    circle_factor;
@@ -972,6 +1206,7 @@ namespace rollnip
                                                parameters,
                                                rolling,
                                                values[n],
+                                               guess,
                                                row,
                                                thermal,
                                                circle_factor);
@@ -1120,7 +1355,8 @@ namespace rollnip
                 const MPI_Comm                   communicator,
                 std::vector<NipRow>             *rows_out,
                 const Parameters::Rolling       *rolling,
-                const bool                       guard_rails)
+                const bool                       guard_rails,
+                CoarserLevels                   *coarser)
   {
     std::vector<NipRow>     rows;
     std::vector<BandWidths> band;
@@ -1135,6 +1371,7 @@ namespace rollnip
     // exception in flight.
     std::unique_ptr<Scene>          scene, linear;
     std::unique_ptr<ErrorCompanion> companion;
+    std::unique_ptr<LevelLadder>    ladder;
     try
       {
         scene = std::make_unique<Scene>(parameters, communicator);
@@ -1147,13 +1384,20 @@ namespace rollnip
           companion =
             std::make_unique<ErrorCompanion>(parameters, communicator);
 
+        if (coarser)
+          ladder =
+            std::make_unique<LevelLadder>(parameters, *coarser, communicator);
+
         failure = sweep_nips(*scene,
                              control,
                              linear.get(),
                              companion.get(),
+                             ladder.get(),
                              parameters,
                              rolling,
                              rows);
+        if (ladder)
+          ladder->write_tables(communicator);
         // The modulus band is the constant modulus's (the last nip may
         // have left its cover softened).
         scene->roll().body().materials().set_modulus_factor({});
@@ -1172,6 +1416,7 @@ namespace rollnip
           if (s)
             s->silence_timers();
         companion.reset();
+        ladder.reset();
         linear.reset();
         scene.reset();
         throw;

@@ -40,7 +40,8 @@
 #    1 and 2, P = 10.5761461 N/mm, which Q2-P1 at levels 2 to 4
 #    extrapolated the same way matches to 8.7e-6
 #    (benchmarks/nip_angle_reference.py); the level-2 run's own P, in
-#    nip_characteristic.csv, is 1.8e-4 off;
+#    nip_characteristic.csv, is 1.8e-4 off, and it starts from level 1's
+#    nip (two contact iterations);
 #  - the same at Target = 0.01 %: Q2-P1 on the file's mesh with 4 edge
 #    refinements, levels 0 to 2 extrapolated, within 0.01 % (+ 1.4e-5);
 #  - a target no candidate is predicted to reach in the allowed levels is
@@ -177,6 +178,10 @@ check_less "its estimated error [N/mm]" "$est" "$(awk -v p="$P" 'BEGIN { print 1
 [ -f angle_fine/extrapolation/level-0/nip_characteristic.csv ] &&
   [ -f angle_fine/extrapolation/level-1/nip_characteristic.csv ] ||
   fail "angle_fine: the coarser levels' files are not in extrapolation/"
+# Level 2 starts from level 1's nip: two contact iterations (three from
+# the unloaded cover).
+check_less "angle_fine: contact iterations of level 2" \
+  "$(contact_value angle_fine contact_iterations)" 3
 # The level-2 run itself: with the edge refinements 1.8e-4 off (3.3e-3
 # without them, on the file's mesh).
 P2=$(csv_value angle_fine/nip_characteristic.csv P_N_per_mm 1)

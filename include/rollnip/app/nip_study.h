@@ -37,6 +37,22 @@ namespace rollnip
     RollingNumbers          rolling; ///< the rolling loss (if asked)
   };
 
+  /**
+   * Mesh levels below a run's own, solved nip by nip ahead of it for an
+   * extrapolation (run_nip_study()): the coarsest from its own last nip,
+   * as a sweep, each finer level from the same nip of the level below,
+   * carried over to its mesh, and the run's level from the finest of
+   * them. The caller sets the levels and directories; the run fills the
+   * rest.
+   */
+  struct CoarserLevels
+  {
+    std::vector<unsigned int>        levels; ///< ascending, below the run's
+    std::vector<std::string>         directories; ///< each level's files
+    std::vector<std::vector<NipRow>> rows;    ///< each level's converged nips
+    std::vector<double>              seconds; ///< each level's wall time [s]
+  };
+
   /// The numbers of @p row that carry an error estimate.
   NipNumbers
   nip_numbers(const NipRow &row);
@@ -53,14 +69,17 @@ namespace rollnip
    * @p rows_out is given, go there too. With @p guard_rails, nips outside
    * the validated range of the material law are warned about
    * (warn_outside_validated_range()); a sweep that is raw material for
-   * another model (the face's cross-section law) has none.
+   * another model (the face's cross-section law) has none. With
+   * @p coarser, its levels solve each nip first, and each level's nip
+   * characteristic goes to its directory.
    */
   int
   run_nip_study(const Parameters::AllParameters &parameters,
                 MPI_Comm                         communicator,
                 std::vector<NipRow>             *rows_out    = nullptr,
                 const Parameters::Rolling       *rolling     = nullptr,
-                bool                             guard_rails = true);
+                bool                             guard_rails = true,
+                CoarserLevels                   *coarser     = nullptr);
 
 } // namespace rollnip
 
