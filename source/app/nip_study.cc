@@ -248,8 +248,8 @@ namespace rollnip
        * starts from the same nip, not from the one before; under load or
        * indentation control the primary's control also starts from its
        * theta0 and slope (returned). estimate() then takes these numbers.
-       * At level 0 (the companion finer) it does nothing: the companion
-       * then follows the primary.
+       * At level 0 (the companion finer), or where its own solve fails, it
+       * leaves nothing: the companion then follows the primary.
        */
       Guess
       lead(const double target, Scene &primary)
@@ -279,14 +279,16 @@ namespace rollnip
                   guess = {c.nonlinear.theta0, control->local_slope(target)};
               }
             else
-              led.failure = c.nonlinear.message;
+              led.active = false;
           }
         catch (const std::exception &error)
           {
             if (is_local_error(error))
               throw;
-            led.failure = one_line_message(error);
+            led.active = false;
           }
+        // A companion that failed first follows the run instead, from the
+        // run's nip (estimate()), as at level 0.
         led.seconds = timer.wall_time();
         return guess;
       }
@@ -308,7 +310,7 @@ namespace rollnip
             return e;
           }
         if (led.active)
-          return estimate(row, led.numbers, led.failure, led.seconds);
+          return estimate(row, led.numbers, "", led.seconds);
         Timer       timer;
         NipNumbers  numbers;
         std::string failure;
@@ -458,10 +460,9 @@ namespace rollnip
       /// The nip lead() solved, if it did.
       struct Led
       {
-        bool        active = false;
-        NipNumbers  numbers{};
-        std::string failure;
-        double      seconds = 0; ///< wall time [s]
+        bool       active = false;
+        NipNumbers numbers{};
+        double     seconds = 0; ///< wall time [s]
       } led;
       std::unique_ptr<Scene>      scene;
       std::unique_ptr<NipControl> control;
@@ -484,6 +485,13 @@ namespace rollnip
       {
         coarser.rows.assign(coarser.levels.size(), {});
         coarser.seconds.assign(coarser.levels.size(), 0.);
+        // Each level's directory holds its nip characteristic alone.
+        if (Utilities::MPI::this_mpi_process(communicator) == 0)
+          for (const auto &directory : coarser.directories)
+            {
+              std::error_code ignored;
+              std::filesystem::remove_all(directory, ignored);
+            }
         SilenceStream quiet(std::cout);
         try
           {
@@ -514,7 +522,8 @@ namespace rollnip
           carry_nip(*scenes.back(), scene);
       }
 
-      /// Each level's nip characteristic in its directory (collective).
+      /// Each level's nip characteristic so far in its directory
+      /// (collective).
       void
       write_tables(const MPI_Comm communicator);
 
@@ -527,15 +536,11 @@ namespace rollnip
           {
             Parameters::AllParameters q = p;
             q.mesh.global_refinements   = level;
-            // The mating roll follows the roll, level for level.
-            q.mating_roll.mesh.global_refinements -=
-              std::min(q.mating_roll.mesh.global_refinements,
-                       p.mesh.global_refinements - level);
-            q.contact.compare_linear  = false;
-            q.output.print_timing     = false;
-            q.output.write_vtu        = false;
-            q.output.write_csv        = false;
-            q.accuracy.error_estimate = false;
+            q.contact.compare_linear    = false;
+            q.output.print_timing       = false;
+            q.output.write_vtu          = false;
+            q.output.write_csv          = false;
+            q.accuracy.error_estimate   = false;
             // The scene and its control keep references to their
             // parameters: each set has its own place.
             parameters.push_back(
@@ -1187,6 +1192,7 @@ namespace rollnip
           if (ladder)
             {
               const std::string stopped = ladder->solve(values[n]);
+              ladder->write_tables(comm);
               if (!stopped.empty())
                 {
                   arm_interrupt_line("", "");
@@ -1198,6 +1204,12 @@ namespace rollnip
           const ErrorCompanion::Guess guess =
             companion ? companion->lead(values[n], scene)
                       : ErrorCompanion::Guess();
+          // A signal during the coarser solves stops before this nip.
+          if ((ladder || companion) && interrupt_requested(comm))
+            {
+              arm_interrupt_line("", "");
+              return why_stopped("", n + 1, values.size(), rows.size(), comm);
+            }
           NipRow          row;
           ThermalCoupling thermal;
           CircleFactor    circle_factor;
@@ -1396,8 +1408,6 @@ namespace rollnip
                              parameters,
                              rolling,
                              rows);
-        if (ladder)
-          ladder->write_tables(communicator);
         // The modulus band is the constant modulus's (the last nip may
         // have left its cover softened).
         scene->roll().body().materials().set_modulus_factor({});
