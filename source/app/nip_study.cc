@@ -35,6 +35,7 @@
 #include <iomanip>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 namespace rollnip
@@ -1151,6 +1152,35 @@ namespace rollnip
       write_nip_pieces(scene, row.nonlinear, dir);
     }
 
+    /// Before the nip of Contact/Values @p target: its solves on the
+    /// levels of @p ladder and by the error estimate's @p companion (each
+    /// may be absent), each handing its nip over to @p scene; @p guess
+    /// gets the first guess of the run's control. Returns why the sweep
+    /// stops before the nip (empty: a signal), or nothing.
+    std::optional<std::string>
+    solve_ahead(Scene                 &scene,
+                LevelLadder           *ladder,
+                ErrorCompanion        *companion,
+                const double           target,
+                ErrorCompanion::Guess &guess,
+                const MPI_Comm         comm)
+    {
+      if (ladder)
+        {
+          const std::string stopped = ladder->solve(target);
+          ladder->write_tables(comm);
+          if (!stopped.empty())
+            return stopped;
+          ladder->hand_over(scene);
+        }
+      if (companion)
+        guess = companion->lead(target, scene);
+      // A signal during these solves stops before the nip.
+      if ((ladder || companion) && interrupt_requested(comm))
+        return std::string();
+      return std::nullopt;
+    }
+
     /// Solves the nips of Contact/Values in turn, evaluates and writes
     /// each, and adds the converged ones to @p rows, with their linear
     /// companions if @p linear is given and their error estimates if
@@ -1189,26 +1219,13 @@ namespace rollnip
           const std::string dir = sweep ? top + "/" + nip : top;
           const std::string vtu =
             "/solution-" + Utilities::int_to_string(n + 1, 4) + ".pvtu";
-          if (ladder)
-            {
-              const std::string stopped = ladder->solve(values[n]);
-              ladder->write_tables(comm);
-              if (!stopped.empty())
-                {
-                  arm_interrupt_line("", "");
-                  return why_stopped(
-                    stopped, n + 1, values.size(), rows.size(), comm);
-                }
-              ladder->hand_over(scene);
-            }
-          const ErrorCompanion::Guess guess =
-            companion ? companion->lead(values[n], scene)
-                      : ErrorCompanion::Guess();
-          // A signal during the coarser solves stops before this nip.
-          if ((ladder || companion) && interrupt_requested(comm))
+          ErrorCompanion::Guess guess;
+          if (const auto stop =
+                solve_ahead(scene, ladder, companion, values[n], guess, comm))
             {
               arm_interrupt_line("", "");
-              return why_stopped("", n + 1, values.size(), rows.size(), comm);
+              return why_stopped(
+                *stop, n + 1, values.size(), rows.size(), comm);
             }
           NipRow          row;
           ThermalCoupling thermal;
