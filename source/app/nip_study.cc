@@ -161,6 +161,23 @@ namespace rollnip
       return mine && theirs && mine->start_from(*theirs);
     }
 
+    /// The scene of @p p at mesh level @p level, solved beside the run
+    /// without a word: no linear companion, no error estimate, no files,
+    /// no timing table.
+    Parameters::AllParameters
+    silent_parameters(const Parameters::AllParameters &p,
+                      const unsigned int               level)
+    {
+      Parameters::AllParameters c = p;
+      c.mesh.global_refinements   = level;
+      c.contact.compare_linear    = false;
+      c.output.print_timing       = false;
+      c.output.write_vtu          = false;
+      c.output.write_csv          = false;
+      c.accuracy.error_estimate   = false;
+      return c;
+    }
+
     /// The scene of the error estimate's companion solve: this one with
     /// both rolls' meshes one level coarser (one finer at level 0), no
     /// linear companion, no files.
@@ -172,15 +189,9 @@ namespace rollnip
       const unsigned int        level = p.mesh.global_refinements;
       const bool                finer = level == 0;
       const unsigned int        mate  = p.mating_roll.mesh.global_refinements;
-      Parameters::AllParameters c     = p;
-      c.mesh.global_refinements       = finer ? 1 : level - 1;
+      Parameters::AllParameters c = silent_parameters(p, finer ? 1 : level - 1);
       c.mating_roll.mesh.global_refinements =
         finer ? mate + 1 : (mate > 0 ? mate - 1 : 0);
-      c.contact.compare_linear  = false;
-      c.output.print_timing     = false;
-      c.output.write_vtu        = false;
-      c.output.write_csv        = false;
-      c.accuracy.error_estimate = false;
       return c;
     }
 
@@ -535,17 +546,11 @@ namespace rollnip
       {
         for (const unsigned int level : coarser.levels)
           {
-            Parameters::AllParameters q = p;
-            q.mesh.global_refinements   = level;
-            q.contact.compare_linear    = false;
-            q.output.print_timing       = false;
-            q.output.write_vtu          = false;
-            q.output.write_csv          = false;
-            q.accuracy.error_estimate   = false;
             // The scene and its control keep references to their
             // parameters: each set has its own place.
             parameters.push_back(
-              std::make_unique<const Parameters::AllParameters>(q));
+              std::make_unique<const Parameters::AllParameters>(
+                silent_parameters(p, level)));
             scenes.push_back(
               std::make_unique<Scene>(*parameters.back(), communicator));
             controls.push_back(
