@@ -431,9 +431,11 @@ namespace rollnip
       a.met     = a.code == 0 && !rows.empty();
       for (const auto q : target.quantities)
         {
-          a.estimate.push_back(candidate.extrapolated
-                                 ? largest_estimate(a.extrapolated, q)
-                                 : largest_estimate(rows, q));
+          // A stopped extrapolated run has no extrapolated numbers.
+          a.estimate.push_back(
+            !candidate.extrapolated ? largest_estimate(rows, q)
+            : a.code == 0           ? largest_estimate(a.extrapolated, q)
+                                    : std::numeric_limits<double>::quiet_NaN());
           a.met = a.met && a.estimate.back() <= target.target;
         }
       return a;
@@ -581,7 +583,11 @@ namespace rollnip
       std::ostringstream out;
       out << candidate_name(a.candidate) << " (" << a.n_dofs << " DoFs, "
           << std::fixed << std::setprecision(2) << a.seconds << " s for "
-          << a.n_nips << " nip(s)): largest estimated";
+          << a.n_nips << " nip(s)): ";
+      // A stopped run's own line says why.
+      if (a.code != 0)
+        return out.str() + "stopped";
+      out << "largest estimated";
       for (unsigned int k = 0; k < target.quantities.size(); ++k)
         out << (k ? ", " : " ") << NipQuantity::label(target.quantities[k])
             << ' ' << std::setprecision(3) << 100 * a.estimate[k] << " %";
@@ -758,8 +764,11 @@ namespace rollnip
           attempt(parameters, target, candidates[c], communicator));
         const Attempt &a = attempts.back();
         write_attempts(attempts, target, parameters.output.directory);
-        pcout << "Accuracy target: " << describe(a, target) << " -> "
-              << (a.met ? "met" : "not met") << std::endl;
+        pcout << "Accuracy target: " << describe(a, target)
+              << (a.code != 0 ? ""
+                  : a.met     ? " -> met"
+                              : " -> not met")
+              << std::endl;
         if (a.met || a.code != 0)
           break;
         // The scene's own error level against the default scene's.

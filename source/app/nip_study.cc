@@ -534,10 +534,11 @@ namespace rollnip
           carry_nip(*scenes.back(), scene);
       }
 
-      /// Each level's nip characteristic so far in its directory
-      /// (collective).
+      /// Each level's first @p n_nips nips, those the run has too, as its
+      /// nip characteristic in its directory (collective); a nip the run
+      /// did not finish is dropped from every level.
       void
-      write_tables(const MPI_Comm communicator);
+      write_tables(const unsigned int n_nips, const MPI_Comm communicator);
 
     private:
       /// A scene and a control per level.
@@ -854,15 +855,21 @@ namespace rollnip
 
 
     void
-    LevelLadder::write_tables(const MPI_Comm communicator)
+    LevelLadder::write_tables(const unsigned int n_nips,
+                              const MPI_Comm     communicator)
     {
       for (unsigned int i = 0; i < parameters.size(); ++i)
-        write_nip_characteristic(coarser.rows[i],
-                                 false,
-                                 scenes[i]->description.roll.cover_thickness(),
-                                 coarser.directories[i],
-                                 communicator,
-                                 false);
+        {
+          if (coarser.rows[i].size() > n_nips)
+            coarser.rows[i].resize(n_nips);
+          write_nip_characteristic(
+            coarser.rows[i],
+            false,
+            scenes[i]->description.roll.cover_thickness(),
+            coarser.directories[i],
+            communicator,
+            false);
+        }
     }
 
     /// Both tables of @p rows, written (not printed) at the start of a
@@ -874,6 +881,7 @@ namespace rollnip
                  const bool                       with_linear,
                  const Parameters::AllParameters &parameters,
                  const SceneDescription          &scene,
+                 LevelLadder                     *ladder,
                  const MPI_Comm                   communicator)
     {
       const std::string &top = parameters.output.directory;
@@ -884,6 +892,8 @@ namespace rollnip
                                communicator,
                                false);
       write_nip_report(rows, parameters, scene, top, communicator, {}, false);
+      if (ladder)
+        ladder->write_tables(rows.size(), communicator);
     }
 
     /// Removes (rank 0) and names the nip-NN directories an earlier run
@@ -1173,7 +1183,6 @@ namespace rollnip
       if (ladder)
         {
           const std::string stopped = ladder->solve(target);
-          ladder->write_tables(comm);
           if (!stopped.empty())
             return stopped;
           ladder->hand_over(scene);
@@ -1201,10 +1210,9 @@ namespace rollnip
                const Parameters::Rolling       *rolling,
                std::vector<NipRow>             &rows)
     {
-      RollProblem       &nonlinear = scene.roll();
-      const auto        &values    = parameters.contact.values;
-      const bool         sweep     = values.size() > 1;
-      const std::string &top       = parameters.output.directory;
+      const auto        &values = parameters.contact.values;
+      const bool         sweep  = values.size() > 1;
+      const std::string &top    = parameters.output.directory;
       // The sweep as one ParaView time series per theory.
       const std::string meaning = sweep_time_meaning(parameters);
       SweepPvd          pvd(top + "/solution_sweep.pvd", meaning);
@@ -1212,9 +1220,10 @@ namespace rollnip
       // A single nip is a sweep of one: its PVD holds the indenter and the
       // contact pressure beside the cover, which its solution.pvd does not.
       const bool     series = parameters.output.write_vtu;
-      const MPI_Comm comm   = nonlinear.communicator();
+      const MPI_Comm comm   = scene.roll().communicator();
       remove_stale_nips(top, sweep ? values.size() : 0, comm);
-      write_tables(rows, linear_scene, parameters, scene.description, comm);
+      write_tables(
+        rows, linear_scene, parameters, scene.description, ladder, comm);
       for (unsigned int n = 0; n < values.size(); ++n)
         {
           arm_stop_line(n + 1, values.size(), rows.size(), top, comm);
@@ -1251,7 +1260,7 @@ namespace rollnip
                 {
                   row.error = companion->estimate(
                     row, values[n], scene, control.local_slope(values[n]));
-                  print_error_estimate(row, n + 1, nonlinear.communicator());
+                  print_error_estimate(row, n + 1, comm);
                 }
               if (rolling && rolling->enabled)
                 evaluate_rolling_nip(scene,
@@ -1287,7 +1296,8 @@ namespace rollnip
           if (interrupt_requested(comm))
             return why_stopped("", n + 1, values.size(), rows.size(), comm);
           rows.push_back(row);
-          write_tables(rows, linear_scene, parameters, scene.description, comm);
+          write_tables(
+            rows, linear_scene, parameters, scene.description, ladder, comm);
         }
       arm_interrupt_line("", "");
       return "";
@@ -1430,6 +1440,9 @@ namespace rollnip
                              parameters,
                              rolling,
                              rows);
+        // The coarser levels keep the nips the run finished.
+        if (ladder && !failure.empty())
+          ladder->write_tables(rows.size(), communicator);
         // The modulus band is the constant modulus's (the last nip may
         // have left its cover softened).
         scene->roll().body().materials().set_modulus_factor({});
