@@ -102,10 +102,10 @@ namespace rollnip
     {
       linear_solver.factorize(roll_body);
     }
-    /// K x = rhs with the last factorisation.
+    /// K x[k] = rhs[k] for each k with the last factorisation.
     void
-    solve_with_tangent(const TrilinosWrappers::MPI::Vector &rhs,
-                       TrilinosWrappers::MPI::Vector       &x) override
+    solve_with_tangent(const std::vector<TrilinosWrappers::MPI::Vector> &rhs,
+                       std::vector<TrilinosWrappers::MPI::Vector> &x) override
     {
       linear_solver.solve(roll_body, rhs, x);
     }

@@ -368,19 +368,24 @@ namespace rollnip
     // step): close to the tangent there, which would cost another
     // assembly and factorisation and change no converged nip, only the
     // rate of the contact iteration a little.
-    const auto                   &cs = *counter_surface;
-    const double                  u0 = gaps.u0;
-    TrilinosWrappers::MPI::Vector du(body.owned_solution());
-    Eigen::MatrixXd               J(zone.m, zone.m);
+    const auto                &cs    = *counter_surface;
+    const double               u0    = gaps.u0;
+    const std::vector<double> &knots = zone.knots;
+    // One solve phase for all the hats' responses.
+    std::vector<TrilinosWrappers::MPI::Vector> rhs,
+      du(zone.m, body.owned_solution());
     for (unsigned int k = 0; k < zone.m; ++k)
       {
-        const std::vector<double>    &knots = zone.knots;
-        TrilinosWrappers::MPI::Vector rhs   = body.pressure_load_derivative(
-          [&knots, k](const double theta) { return hat(knots, k, theta); });
-        rhs *= -1.;
-        du = 0;
-        body.solve_with_tangent(rhs, du);
-        const auto   dU   = nodal_values(du);
+        rhs.push_back(body.pressure_load_derivative(
+          [&knots, k](const double theta) { return hat(knots, k, theta); }));
+        rhs.back() *= -1.;
+        du[k] = 0;
+      }
+    body.solve_with_tangent(rhs, du);
+    Eigen::MatrixXd J(zone.m, zone.m);
+    for (unsigned int k = 0; k < zone.m; ++k)
+      {
+        const auto   dU   = nodal_values(du[k]);
         const double du0  = -dU[0][0];
         auto         dgap = [&](const unsigned int i) {
           return cs.gap_gradient(gaps.x[i], u0) * dU[i] +

@@ -58,4 +58,19 @@ namespace rollnip
       direct_solver.solve(rhs, x);
     body.constraints().distribute(x);
   }
+
+  void
+  LinearSolver::solve(const RollBody                                   &body,
+                      const std::vector<TrilinosWrappers::MPI::Vector> &rhs,
+                      std::vector<TrilinosWrappers::MPI::Vector>       &x)
+  {
+    TimerOutput::Scope t(timer, "linear solve");
+    if (iterative)
+      for (unsigned int k = 0; k < rhs.size(); ++k)
+        iterative_solver.solve(rhs[k], x[k]);
+    else
+      direct_solver.solve(rhs, x);
+    for (auto &v : x)
+      body.constraints().distribute(v);
+  }
 } // namespace rollnip

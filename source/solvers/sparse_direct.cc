@@ -5,12 +5,60 @@
 
 #include <Amesos.h>
 #include <Amesos_config.h>
+#include <Epetra_MultiVector.h>
 #ifdef HAVE_AMESOS_MUMPS
 #include <Amesos_Mumps.h>
 #endif
 
+#include <algorithm>
+#include <memory>
+
 namespace rollnip
 {
+#ifdef HAVE_AMESOS_MUMPS
+  namespace
+  {
+    /**
+     * Amesos_Mumps with one MUMPS solve phase for several right-hand
+     * sides: Amesos_Mumps::Solve() calls MUMPS once per column of its
+     * multivector, and each call reads the whole factors for one vector.
+     */
+    class MultiRhsMumps : public Amesos_Mumps
+    {
+    public:
+      using Amesos_Mumps::Amesos_Mumps;
+
+      /// X = A^-1 B with the last factorisation; MUMPS's INFOG(1) (0 or
+      /// positive: done), or -1 if the vectors could not be moved.
+      int
+      solve_columns(const Epetra_MultiVector &B, Epetra_MultiVector &X)
+      {
+        // MUMPS takes a centralised dense right-hand side on process 0.
+        Epetra_MultiVector columns(SerialMap(), B.NumVectors());
+        if (columns.Import(B, SerialImporter(), Insert) != 0)
+          return -1;
+        const int nrhs = MDS.nrhs, lrhs = MDS.lrhs;
+        if (Comm().MyPID() == 0)
+          {
+            MDS.rhs  = columns.Values();
+            MDS.nrhs = B.NumVectors();
+            MDS.lrhs = columns.Stride();
+          }
+        MDS.job = 3;
+        if (Comm().MyPID() < MaxProcs_)
+          dmumps_c(&MDS);
+        MDS.nrhs   = nrhs;
+        MDS.lrhs   = lrhs;
+        int status = MDS.infog[0];
+        Comm().MinAll(&status, &status, 1);
+        if (status < 0)
+          return status;
+        return X.Export(columns, SerialImporter(), Insert) == 0 ? 0 : -1;
+      }
+    };
+  } // namespace
+#endif
+
   SparseDirectSolver::SparseDirectSolver(const std::string &name)
       : solver_name(name)
   {}
@@ -26,7 +74,12 @@ namespace rollnip
   SparseDirectSolver::analyse(const int workspace_relaxation)
   {
     Amesos factory;
-    solver.reset(factory.Create(solver_name.c_str(), linear_problem));
+#ifdef HAVE_AMESOS_MUMPS
+    if (solver_name == "Amesos_Mumps")
+      solver = std::make_unique<MultiRhsMumps>(linear_problem);
+    else
+#endif
+      solver.reset(factory.Create(solver_name.c_str(), linear_problem));
     AssertThrow(solver != nullptr,
                 ExcMessage("Linear solver/Direct solver: '" + solver_name +
                            "' is not available in this Trilinos"));
@@ -89,5 +142,30 @@ namespace rollnip
       static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
     AssertThrow(solver->Solve() == 0,
                 ExcMessage("the sparse direct solve failed"));
+  }
+
+  void
+  SparseDirectSolver::solve(const std::vector<TrilinosWrappers::MPI::Vector> &b,
+                            std::vector<TrilinosWrappers::MPI::Vector>       &x)
+  {
+    AssertDimension(b.size(), x.size());
+#ifdef HAVE_AMESOS_MUMPS
+    if (auto *mumps = dynamic_cast<MultiRhsMumps *>(solver.get());
+        mumps && b.size() > 1)
+      {
+        const Epetra_BlockMap &map = b[0].trilinos_vector().Map();
+        const unsigned int     n   = map.NumMyPoints();
+        Epetra_MultiVector     B(map, b.size()), X(map, b.size());
+        for (unsigned int k = 0; k < b.size(); ++k)
+          std::copy_n(b[k].trilinos_vector()[0], n, B[k]);
+        AssertThrow(mumps->solve_columns(B, X) == 0,
+                    ExcMessage("the sparse direct solve failed"));
+        for (unsigned int k = 0; k < x.size(); ++k)
+          std::copy_n(X[k], n, x[k].trilinos_vector()[0]);
+        return;
+      }
+#endif
+    for (unsigned int k = 0; k < b.size(); ++k)
+      solve(b[k], x[k]);
   }
 } // namespace rollnip

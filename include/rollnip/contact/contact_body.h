@@ -54,7 +54,8 @@ namespace rollnip
     load_resultant(const double load_fraction) const = 0;
 
     /// The linearisation at the current state: assemble, factorise the
-    /// tangent, d R / d s for an extra pressure s g(Theta), K x = rhs.
+    /// tangent, d R / d s for an extra pressure s g(Theta), K x = rhs
+    /// for several right-hand sides at once.
     virtual double
     assemble(const double load_fraction, const bool with_matrix) = 0;
     virtual void
@@ -62,8 +63,8 @@ namespace rollnip
     virtual TrilinosWrappers::MPI::Vector
     pressure_load_derivative(const std::function<double(double)> &g) const = 0;
     virtual void
-    solve_with_tangent(const TrilinosWrappers::MPI::Vector &rhs,
-                       TrilinosWrappers::MPI::Vector       &x) = 0;
+    solve_with_tangent(const std::vector<TrilinosWrappers::MPI::Vector> &rhs,
+                       std::vector<TrilinosWrappers::MPI::Vector>       &x) = 0;
 
     /// The nip-fitted mesh, if the body has one.
     virtual bool

@@ -50,6 +50,13 @@ namespace rollnip
           const TrilinosWrappers::MPI::Vector &rhs,
           TrilinosWrappers::MPI::Vector       &x);
 
+    /// The same for each of @p rhs, into @p x (sized alike): the direct
+    /// solver takes them all in one pass.
+    void
+    solve(const RollBody                                   &body,
+          const std::vector<TrilinosWrappers::MPI::Vector> &rhs,
+          std::vector<TrilinosWrappers::MPI::Vector>       &x);
+
     unsigned int
     n_factorizations() const
     {

@@ -11,6 +11,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace rollnip
 {
@@ -41,6 +42,13 @@ namespace rollnip
     void
     solve(const TrilinosWrappers::MPI::Vector &b,
           TrilinosWrappers::MPI::Vector       &x);
+
+    /// x[k] = A^-1 b[k] for every k with the last factorisation; MUMPS
+    /// takes all of them in one solve phase, which reads the factors once
+    /// for all (blocked triangular solves) instead of once per vector.
+    void
+    solve(const std::vector<TrilinosWrappers::MPI::Vector> &b,
+          std::vector<TrilinosWrappers::MPI::Vector>       &x);
 
     const std::string &
     name() const
