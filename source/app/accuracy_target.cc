@@ -431,11 +431,11 @@ namespace rollnip
       a.met     = a.code == 0 && !rows.empty();
       for (const auto q : target.quantities)
         {
-          // A stopped extrapolated run has no extrapolated numbers.
+          // A stopped run has no estimate (nor extrapolated numbers).
           a.estimate.push_back(
-            !candidate.extrapolated ? largest_estimate(rows, q)
-            : a.code == 0           ? largest_estimate(a.extrapolated, q)
-                                    : std::numeric_limits<double>::quiet_NaN());
+            a.code != 0              ? std::numeric_limits<double>::quiet_NaN()
+            : candidate.extrapolated ? largest_estimate(a.extrapolated, q)
+                                     : largest_estimate(rows, q));
           a.met = a.met && a.estimate.back() <= target.target;
         }
       return a;

@@ -6,11 +6,11 @@
 #include <Amesos.h>
 #include <Amesos_config.h>
 #include <Epetra_MultiVector.h>
+#include <Epetra_Vector.h>
 #ifdef HAVE_AMESOS_MUMPS
 #include <Amesos_Mumps.h>
 #endif
 
-#include <algorithm>
 #include <memory>
 
 namespace rollnip
@@ -28,32 +28,57 @@ namespace rollnip
     public:
       using Amesos_Mumps::Amesos_Mumps;
 
-      /// X = A^-1 B with the last factorisation; MUMPS's INFOG(1) (0 or
-      /// positive: done), or -1 if the vectors could not be moved.
+      /// x[k] = A^-1 b[k] with the last factorisation; MUMPS's INFOG(1)
+      /// (0 or positive: done), or -1 if the vectors could not be moved.
       int
-      solve_columns(const Epetra_MultiVector &B, Epetra_MultiVector &X)
+      solve_columns(const std::vector<TrilinosWrappers::MPI::Vector> &b,
+                    std::vector<TrilinosWrappers::MPI::Vector>       &x)
       {
         // MUMPS takes a centralised dense right-hand side on process 0.
-        Epetra_MultiVector columns(SerialMap(), B.NumVectors());
-        if (columns.Import(B, SerialImporter(), Insert) != 0)
-          return -1;
-        const int nrhs = MDS.nrhs, lrhs = MDS.lrhs;
-        if (Comm().MyPID() == 0)
+        Epetra_MultiVector columns(SerialMap(), b.size());
+        for (unsigned int k = 0; k < b.size(); ++k)
+          {
+            Epetra_Vector column(View, columns, k);
+            if (column.Import(b[k].trilinos_vector(),
+                              SerialImporter(),
+                              Insert) != 0)
+              return -1;
+          }
+        const bool host = Comm().MyPID() == 0;
+        const int  nrhs = host ? MDS.nrhs : 0, lrhs = host ? MDS.lrhs : 0;
+        if (host)
           {
             MDS.rhs  = columns.Values();
-            MDS.nrhs = B.NumVectors();
+            MDS.nrhs = b.size();
             MDS.lrhs = columns.Stride();
           }
-        MDS.job = 3;
+        // Processes outside MUMPS's communicator have no status of theirs.
+        int status = 0;
         if (Comm().MyPID() < MaxProcs_)
-          dmumps_c(&MDS);
-        MDS.nrhs   = nrhs;
-        MDS.lrhs   = lrhs;
-        int status = MDS.infog[0];
-        Comm().MinAll(&status, &status, 1);
-        if (status < 0)
-          return status;
-        return X.Export(columns, SerialImporter(), Insert) == 0 ? 0 : -1;
+          {
+            MDS.job = 3;
+            dmumps_c(&MDS);
+            status = MDS.infog[0];
+          }
+        if (host)
+          {
+            MDS.rhs  = nullptr;
+            MDS.nrhs = nrhs;
+            MDS.lrhs = lrhs;
+          }
+        int worst = 0;
+        Comm().MinAll(&status, &worst, 1);
+        if (worst < 0)
+          return worst;
+        for (unsigned int k = 0; k < x.size(); ++k)
+          {
+            Epetra_Vector column(View, columns, k);
+            if (x[k].trilinos_vector().Export(column,
+                                              SerialImporter(),
+                                              Insert) != 0)
+              return -1;
+          }
+        return 0;
       }
     };
   } // namespace
@@ -150,20 +175,11 @@ namespace rollnip
   {
     AssertDimension(b.size(), x.size());
 #ifdef HAVE_AMESOS_MUMPS
+    // Where MUMPS fails on all at once (its workspace for many columns,
+    // say), one at a time, as Amesos does.
     if (auto *mumps = dynamic_cast<MultiRhsMumps *>(solver.get());
-        mumps && b.size() > 1)
-      {
-        const Epetra_BlockMap &map = b[0].trilinos_vector().Map();
-        const unsigned int     n   = map.NumMyPoints();
-        Epetra_MultiVector     B(map, b.size()), X(map, b.size());
-        for (unsigned int k = 0; k < b.size(); ++k)
-          std::copy_n(b[k].trilinos_vector()[0], n, B[k]);
-        AssertThrow(mumps->solve_columns(B, X) == 0,
-                    ExcMessage("the sparse direct solve failed"));
-        for (unsigned int k = 0; k < x.size(); ++k)
-          std::copy_n(X[k], n, x[k].trilinos_vector()[0]);
-        return;
-      }
+        mumps && b.size() > 1 && mumps->solve_columns(b, x) == 0)
+      return;
 #endif
     for (unsigned int k = 0; k < b.size(); ++k)
       solve(b[k], x[k]);
