@@ -1213,14 +1213,13 @@ namespace rollnip
       const auto        &values = parameters.contact.values;
       const bool         sweep  = values.size() > 1;
       const std::string &top    = parameters.output.directory;
-      // The sweep as one ParaView time series per theory.
+      // The sweep as one ParaView time series per theory; a single nip too
+      // (its PVD holds the indenter and contact pressure, solution.pvd not).
       const std::string meaning = sweep_time_meaning(parameters);
       SweepPvd          pvd(top + "/solution_sweep.pvd", meaning);
       SweepPvd          linear_pvd(top + "/solution_sweep_linear.pvd", meaning);
-      // A single nip is a sweep of one: its PVD holds the indenter and the
-      // contact pressure beside the cover, which its solution.pvd does not.
-      const bool     series = parameters.output.write_vtu;
-      const MPI_Comm comm   = scene.roll().communicator();
+      const bool        series = parameters.output.write_vtu;
+      const MPI_Comm    comm   = scene.roll().communicator();
       remove_stale_nips(top, sweep ? values.size() : 0, comm);
       write_tables(
         rows, linear_scene, parameters, scene.description, ladder, comm);
