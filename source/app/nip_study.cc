@@ -132,11 +132,14 @@ namespace rollnip
       fill_nip_values(nonlinear, row);
       const double difference =
         row.load_from_traction / row.nonlinear.nip_load - 1;
-      pcout << "Nip " << n << ": P from the applied pressure "
-            << std::setprecision(6) << row.nonlinear.nip_load
-            << " N/mm, from the surface stress " << row.load_from_traction
-            << " N/mm (difference " << std::setprecision(3) << 100 * difference
-            << " %)" << std::endl;
+      // Formatted apart: std::cout's precision stays as it was.
+      std::ostringstream line;
+      line << "Nip " << n << ": P from the applied pressure " << std::fixed
+           << std::setprecision(6) << row.nonlinear.nip_load
+           << " N/mm, from the surface stress " << row.load_from_traction
+           << " N/mm (difference " << std::setprecision(3) << 100 * difference
+           << " %)";
+      pcout << line.str() << std::endl;
       // The two agree to a fraction of a per cent on a mesh that resolves
       // the nip; far apart, the numbers above are not to be trusted.
       if (root && !(std::abs(difference) < traction_mismatch_warning))
@@ -177,6 +180,116 @@ namespace rollnip
       c.accuracy.error_estimate   = false;
       return c;
     }
+
+    /**
+     * The run's contact solver as its load or indentation control sees
+     * it, keeping the numbers of its last converged solves: from the last
+     * two the error estimate's companion takes the slope of every number
+     * along the nip curve (slopes()), and so needs one solve where it
+     * would take two. Used where the companion is the finer mesh (a run
+     * at level 0), which has no level-0 scene to start from: the control
+     * then never needs to see through this to the InverseContact.
+     */
+    class RecordingSolver : public NipSolver
+    {
+    public:
+      explicit RecordingSolver(Scene &scene)
+          : recorded_scene(scene)
+          , solver(scene.nip_solver())
+      {}
+
+      void
+      set_control_goal(const std::optional<ControlGoal> &goal) override
+      {
+        solver.set_control_goal(goal);
+      }
+
+      ContactResult
+      solve(const double theta0) override
+      {
+        const ContactResult r = solver.solve(theta0);
+        if (r.converged)
+          {
+            NipRow row;
+            row.nonlinear = r;
+            fill_nip_values(recorded_scene, row);
+            if (records.size() == max_records)
+              records.erase(records.begin());
+            records.push_back({r.theta0, nip_numbers(row)});
+          }
+        return r;
+      }
+
+      double
+      max_nip_angle() override
+      {
+        return solver.max_nip_angle();
+      }
+
+      MPI_Comm
+      communicator() const override
+      {
+        return solver.communicator();
+      }
+
+      const SceneDescription &
+      scene() const override
+      {
+        return solver.scene();
+      }
+
+      void
+      write_results(const ContactResult &result,
+                    const std::string   &directory,
+                    const unsigned int   step,
+                    const bool           with_vtu) override
+      {
+        solver.write_results(result, directory, step, with_vtu);
+      }
+
+      /// d N / d log q of every number N of the last converged solve, if
+      /// that was at @p theta0 (q: the controlled number, @p q_index), as
+      /// the secant to the recorded solve nearest to it in log q of those
+      /// at least min_step away; that step in @p step. False if none.
+      bool
+      slopes(const double       theta0,
+             const unsigned int q_index,
+             NipNumbers        &slopes,
+             double            &step) const
+      {
+        if (records.empty() || records.back().theta0 != theta0)
+          return false;
+        const NipNumbers &last = records.back().numbers;
+        step                   = 0;
+        for (std::size_t k = 0; k + 1 < records.size(); ++k)
+          {
+            const double d =
+              std::log(last[q_index] / records[k].numbers[q_index]);
+            if (std::abs(d) >= min_step &&
+                (step == 0 || std::abs(d) < std::abs(step)))
+              {
+                step = d;
+                for (unsigned int q = 0; q < NipQuantity::n_quantities; ++q)
+                  slopes[q] = (last[q] - records[k].numbers[q]) / d;
+              }
+          }
+        return step != 0;
+      }
+
+    private:
+      /// Nearer solves give a slope within the numbers' own convergence
+      /// (a conformity of 1e-6 or so) of noise.
+      static constexpr double      min_step    = 1e-4;
+      static constexpr std::size_t max_records = 6;
+      struct Record
+      {
+        double     theta0;
+        NipNumbers numbers;
+      };
+      Scene              &recorded_scene;
+      NipSolver          &solver;
+      std::vector<Record> records;
+    };
 
     /// The scene of the error estimate's companion solve: this one with
     /// both rolls' meshes one level coarser (one finer at level 0), no
@@ -243,6 +356,13 @@ namespace rollnip
       ~ErrorCompanion()
       {
         release();
+      }
+
+      /// Takes the run's slopes from @p run (interpolate_to_target()).
+      void
+      follow(const RecordingSolver &run)
+      {
+        path = &run;
       }
 
       /// Where the primary's control starts: theta0 and d log q / d log
@@ -397,16 +517,17 @@ namespace rollnip
 
       /**
        * Under load or indentation control, the numbers at @p target from
-       * two nip-angle solves instead of the control's iteration: at the
-       * primary's @p theta0 (which misses the target by the difference
-       * of the meshes, a few 1e-3) and one secant step from it with the
-       * primary's @p slope (d log q / d log theta0), then every number
-       * interpolated linearly in log q to the target. The interpolation
-       * errs by about the product of the two misses, which must lie
-       * within Contact/Control tolerance, the error the control's own
-       * last solve would leave; the control's third solve, which only
-       * closes that gap, is saved. Returns false where the two solves do
-       * not get there (the control then takes over).
+       * one or two nip-angle solves instead of the control's iteration:
+       * at the primary's @p theta0 (which misses the target by the
+       * difference of the meshes, 1e-4 to a few 1e-3), then either every
+       * number moved to the target along the primary's own slopes (where
+       * the run recorded them: path) or one secant step with the
+       * primary's @p slope (d log q / d log theta0) and every number
+       * interpolated linearly in log q to the target. Each errs by less
+       * than Contact/Control tolerance, the error the control's own last
+       * solve would leave; the control's further solves, which only
+       * close that gap, are saved. Returns false where the solves do not
+       * get there (the control then takes over).
        */
       bool
       interpolate_to_target(const double target,
@@ -436,6 +557,24 @@ namespace rollnip
         numbers = nip_numbers(first);
         if (std::abs(miss_1) < tolerance)
           return true;
+        // One solve: every number moved to the target along the run's
+        // nip curve. That errs by the miss times the slope's error,
+        // about its secant's step plus the meshes' difference, on
+        // slopes of at most about 2 in log-log.
+        NipNumbers slopes;
+        double     step = 0;
+        if (path &&
+            path->slopes(theta0,
+                         by_load ? NipQuantity::load : NipQuantity::indentation,
+                         slopes,
+                         step) &&
+            2 * std::abs(miss_1) * (std::abs(step) + slope_mesh_difference) <
+              tolerance)
+          {
+            for (unsigned int q = 0; q < NipQuantity::n_quantities; ++q)
+              numbers[q] -= slopes[q] * miss_1;
+            return true;
+          }
         const double miss_2 = solve(second, theta0 * std::exp(-miss_1 / slope));
         if (!std::isfinite(miss_2) ||
             !(std::abs(miss_1 * miss_2) < tolerance &&
@@ -478,6 +617,11 @@ namespace rollnip
       } led;
       std::unique_ptr<Scene>      scene;
       std::unique_ptr<NipControl> control;
+      const RecordingSolver      *path = nullptr; ///< the run's, if given
+      /// How much the slopes of a number along the nip curve differ
+      /// between two mesh levels, relative, at most (their discretisation
+      /// error, below 1e-3 in P for Q2-P1 at level 0).
+      static constexpr double slope_mesh_difference = 1e-2;
     };
 
     /**
@@ -641,22 +785,22 @@ namespace rollnip
                     << std::endl;
           return;
         }
-      const NipNumbers v = nip_numbers(row);
-      std::cout << "Nip " << n << ": estimated errors (against mesh level "
-                << e.companion_level << ", " << std::fixed
-                << std::setprecision(2) << e.companion_seconds << " s):";
+      const NipNumbers   v = nip_numbers(row);
+      std::ostringstream line; // std::cout's format stays as it was
+      line << "Nip " << n << ": estimated errors (against mesh level "
+           << e.companion_level << ", " << std::fixed << std::setprecision(2)
+           << e.companion_seconds << " s):";
       const char *separator = " ";
       for (unsigned int q = NipQuantity::load; q < NipQuantity::n_quantities;
            ++q)
         {
           const auto i = NipQuantity::Index(q);
-          std::cout << separator << NipQuantity::label(i) << ' '
-                    << std::setprecision(q >= NipQuantity::bond_sigma_rr ? 1
-                                                                         : 3)
-                    << 100 * e.relative(i, v[q]) << " %";
+          line << separator << NipQuantity::label(i) << ' '
+               << std::setprecision(q >= NipQuantity::bond_sigma_rr ? 1 : 3)
+               << 100 * e.relative(i, v[q]) << " %";
           separator = ", ";
         }
-      std::cout << std::defaultfloat << std::endl;
+      std::cout << line.str() << std::endl;
     }
 
     /// The results files of one nip in @p dir: the problem's (status from
@@ -1412,13 +1556,21 @@ namespace rollnip
     // The scenes (and the companion's) are destroyed inside the handler
     // when something throws, so that their timers do not report on an
     // exception in flight.
-    std::unique_ptr<Scene>          scene, linear;
-    std::unique_ptr<ErrorCompanion> companion;
-    std::unique_ptr<LevelLadder>    ladder;
+    std::unique_ptr<Scene>           scene, linear;
+    std::unique_ptr<RecordingSolver> recorder;
+    std::unique_ptr<ErrorCompanion>  companion;
+    std::unique_ptr<LevelLadder>     ladder;
     try
       {
         scene = std::make_unique<Scene>(parameters, communicator);
-        NipControl control(scene->nip_solver(), parameters);
+        // At level 0 the error estimate's companion is the finer mesh,
+        // solved after the run: it takes the run's slopes.
+        if (parameters.accuracy.error_estimate &&
+            parameters.mesh.global_refinements == 0 &&
+            parameters.contact.mode != Parameters::ContactMode::nip_angle)
+          recorder = std::make_unique<RecordingSolver>(*scene);
+        NipControl control(recorder ? *recorder : scene->nip_solver(),
+                           parameters);
         if (parameters.contact.compare_linear)
           linear = std::make_unique<Scene>(linear_parameters, communicator);
 
@@ -1426,6 +1578,8 @@ namespace rollnip
         if (parameters.accuracy.error_estimate)
           companion =
             std::make_unique<ErrorCompanion>(parameters, communicator);
+        if (companion && recorder)
+          companion->follow(*recorder);
 
         if (coarser)
           ladder =
@@ -1460,6 +1614,7 @@ namespace rollnip
           if (s)
             s->silence_timers();
         companion.reset();
+        recorder.reset();
         ladder.reset();
         linear.reset();
         scene.reset();

@@ -37,7 +37,12 @@ namespace rollnip
           , grad_phi(fe.n_dofs_per_cell())
           , psi(fe.n_dofs_per_cell())
           , dP(fe.n_dofs_per_cell())
-      {}
+          , dc(fe.n_dofs_per_cell())
+          , component(fe.n_dofs_per_cell())
+      {
+        for (unsigned int k = 0; k < fe.n_dofs_per_cell(); ++k)
+          component[k] = fe.system_to_component_index(k).first;
+      }
 
       // WorkStream copies the scratch object once per thread.
       AssemblyScratch(const AssemblyScratch &other)
@@ -58,7 +63,11 @@ namespace rollnip
       std::vector<Tensor<2, dim>>        grad_phi;
       std::vector<double>                psi;
       std::vector<Tensor<2, dim>>        dP;
-      std::vector<Tensor<2, dim>>        face_grad_u;
+      std::vector<double>                dc; ///< dP/dq : Grad phi_k
+      /// The vector component of each shape function: the pressure's, or the
+      /// one row of its (primitive) gradient.
+      std::vector<unsigned int>   component;
+      std::vector<Tensor<2, dim>> face_grad_u;
     };
 
     /// One cell's contributions, handed to the (serial) copier.
@@ -137,16 +146,45 @@ namespace rollnip
             }
           if (!with_matrix)
             continue;
+          // dP[dF] is linear in dF: the law is called once per entry of
+          // dF, not once per shape function. Each displacement shape
+          // function's gradient has one nonzero row (its component); a
+          // pressure one has none, and psi vanishes on the others.
+          Tensor<2, dim> dP_dF[dim][dim];
+          for (unsigned int a = 0; a < dim; ++a)
+            for (unsigned int b = 0; b < dim; ++b)
+              {
+                Tensor<2, dim> E;
+                E[a][b]     = 1;
+                dP_dF[a][b] = material.piola_derivative(F, p, E);
+              }
           for (unsigned int j = 0; j < n_dofs; ++j)
-            dP[j] = material.piola_derivative(F, p, grad_phi[j]);
+            {
+              const unsigned int c = scratch.component[j];
+              dP[j]                = Tensor<2, dim>();
+              scratch.dc[j]        = 0;
+              if (c == FEFields::pressure_component)
+                continue;
+              for (unsigned int b = 0; b < dim; ++b)
+                dP[j] += grad_phi[j][c][b] * dP_dF[c][b];
+              scratch.dc[j] = dP_dq[c] * grad_phi[j][c];
+            }
           for (unsigned int i = 0; i < n_dofs; ++i)
             {
-              const double gi = scalar_product(dP_dq, grad_phi[i]);
+              const unsigned int ci = scratch.component[i];
+              if (ci == FEFields::pressure_component)
+                {
+                  for (unsigned int j = 0; j < n_dofs; ++j)
+                    copy.cell_matrix(i, j) += psi[i] * scratch.dc[j] * JxW;
+                  continue;
+                }
+              const Tensor<1, dim> g_i = grad_phi[i][ci] * JxW;
+              const double         d_i = scratch.dc[i] * JxW;
               for (unsigned int j = 0; j < n_dofs; ++j)
                 copy.cell_matrix(i, j) +=
-                  (scalar_product(dP[j], grad_phi[i]) + gi * psi[j] +
-                   psi[i] * scalar_product(dP_dq, grad_phi[j])) *
-                  JxW;
+                  scratch.component[j] == FEFields::pressure_component
+                    ? d_i * psi[j]
+                    : dP[j][ci] * g_i;
             }
           if (compliance != 0)
             for (unsigned int i = 0; i < n_dofs; ++i)

@@ -372,14 +372,13 @@ namespace rollnip
     const double               u0    = gaps.u0;
     const std::vector<double> &knots = zone.knots;
     // One solve phase for all the hats' responses.
-    std::vector<TrilinosWrappers::MPI::Vector> rhs,
-      du(zone.m, body.owned_solution());
+    std::vector<TrilinosWrappers::MPI::Vector> rhs, du(zone.m);
     for (unsigned int k = 0; k < zone.m; ++k)
       {
         rhs.push_back(body.pressure_load_derivative(
           [&knots, k](const double theta) { return hat(knots, k, theta); }));
         rhs.back() *= -1.;
-        du[k] = 0;
+        du[k].reinit(body.owned_solution()); // its layout, zero
       }
     body.solve_with_tangent(rhs, du);
     Eigen::MatrixXd J(zone.m, zone.m);
@@ -503,8 +502,12 @@ namespace rollnip
   void
   InverseContact::print_header(const Zone &zone) const
   {
-    pcout << "Contact iteration, theta0 = " << zone.theta0 * degrees_per_radian
-          << " deg, " << zone.m << " pressure parameters";
+    // Its own precision: lines printed before may leave std::cout's low.
+    std::ostringstream line;
+    line << std::setprecision(6)
+         << "Contact iteration, theta0 = " << zone.theta0 * degrees_per_radian
+         << " deg, " << zone.m << " pressure parameters";
+    pcout << line.str();
     if (body.has_nip_fitted_mesh())
       {
         const MeshQuality  q = body.cell_quality();
