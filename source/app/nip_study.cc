@@ -183,12 +183,13 @@ namespace rollnip
 
     /**
      * The run's contact solver as its load or indentation control sees
-     * it, keeping the numbers of its last converged solves: from the last
-     * two the error estimate's companion takes the slope of every number
-     * along the nip curve (slopes()), and so needs one solve where it
-     * would take two. Used where the companion is the finer mesh (a run
-     * at level 0), which has no level-0 scene to start from: the control
-     * then never needs to see through this to the InverseContact.
+     * it, keeping the numbers of its last fully converged solves: from
+     * the last one and the nearest other the error estimate's companion
+     * takes the slope of every number along the nip curve (slopes()),
+     * and so needs one solve where it would take two. Used where the companion
+     * is the finer mesh (a run at level 0), which has no level-0 scene to start
+     * from: the control then never needs to see through this to the
+     * InverseContact.
      */
     class RecordingSolver : public NipSolver
     {
@@ -208,7 +209,8 @@ namespace rollnip
       solve(const double theta0) override
       {
         const ContactResult r = solver.solve(theta0);
-        if (r.converged)
+        // A provisional solve stopped short of the curve.
+        if (r.converged && !r.provisional)
           {
             NipRow row;
             row.nonlinear = r;
