@@ -1566,10 +1566,14 @@ namespace rollnip
       {
         scene = std::make_unique<Scene>(parameters, communicator);
         // At level 0 the error estimate's companion is the finer mesh,
-        // solved after the run: it takes the run's slopes.
+        // solved after the run: it takes the run's slopes where it starts
+        // from the run's nip (carry_nip(): one process, a rigid counter
+        // surface), and nowhere else needs them.
         if (parameters.accuracy.error_estimate &&
             parameters.mesh.global_refinements == 0 &&
-            parameters.contact.mode != Parameters::ContactMode::nip_angle)
+            parameters.contact.mode != Parameters::ContactMode::nip_angle &&
+            Utilities::MPI::n_mpi_processes(communicator) == 1 &&
+            dynamic_cast<InverseContact *>(&scene->nip_solver()))
           recorder = std::make_unique<RecordingSolver>(*scene);
         NipControl control(recorder ? *recorder : scene->nip_solver(),
                            parameters);

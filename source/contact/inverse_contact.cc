@@ -194,6 +194,7 @@ namespace rollnip
     const double p_hertz = NipEstimates::contact_modulus(description) *
                            half_width /
                            (2 * NipEstimates::effective_radius(description));
+    const double growth = pressure_growth();
     iterate.a.assign(zone.m, 0.);
     iterate.f_from.assign(zone.m, 0.);
     for (unsigned int k = 0; k < zone.m; ++k)
@@ -202,10 +203,12 @@ namespace rollnip
         if (applied_pressure)
           {
             // Warm start from the pressure of the current state, stretched
-            // to the new zone and scaled as in Hertz (peak ~ nip width).
+            // to the new zone and scaled as the peak grew between the last
+            // two nips (as in Hertz, peak ~ nip width, before there are
+            // two): a cover thinner than the nip stiffens as it grows.
             iterate.f_from[k] = applied_pressure(t);
             iterate.a[k] = applied_pressure(t * applied_theta0 / zone.theta0) *
-                           zone.theta0 / applied_theta0;
+                           std::pow(zone.theta0 / applied_theta0, growth);
           }
         else
           iterate.a[k] =
@@ -556,12 +559,26 @@ namespace rollnip
       }
     if (result.converged)
       {
+        const NipSize size{zone.theta0, result.peak_pressure};
+        if (std::abs(std::log(zone.theta0 / last_nip.theta0)) > 1e-3)
+          nip_before = last_nip;
+        last_nip           = size;
         converged.state    = body.owned_solution();
         converged.pressure = applied_pressure;
         converged.theta0   = zone.theta0;
         return;
       }
     restore_converged(Converged(converged));
+  }
+
+  double
+  InverseContact::pressure_growth() const
+  {
+    const double span = std::log(last_nip.theta0 / nip_before.theta0);
+    if (!(nip_before.peak > 0 && last_nip.peak > 0 && std::abs(span) > 1e-3))
+      return 1.;
+    const double g = std::log(last_nip.peak / nip_before.peak) / span;
+    return std::isfinite(g) ? std::clamp(g, 0.5, 3.) : 1.;
   }
 
   void

@@ -177,8 +177,8 @@ namespace rollnip
     Zone
     make_zone(const double theta0);
 
-    /// The first pressure: the last one stretched to the new zone, or a
-    /// Hertz-like parabola.
+    /// The first pressure: the last one stretched to the new zone and
+    /// scaled by pressure_growth(), or a Hertz-like parabola.
     void
     initial_pressure(const Zone &zone, Iterate &iterate) const;
 
@@ -217,6 +217,11 @@ namespace rollnip
     void
     finish(const Zone &zone, ContactResult &result);
 
+    /// d log(peak pressure) / d log theta0 along the nips solved so far,
+    /// or 1 (Hertz) before two of them.
+    double
+    pressure_growth() const;
+
     ContactBody                                &body;
     const Parameters::AllParameters            &parameters;
     const SceneDescription                      description;
@@ -233,6 +238,14 @@ namespace rollnip
     double                        applied_theta0 = 0;
     /// The last converged nip.
     Converged converged;
+    /// theta0 and peak pressure of a converged nip.
+    struct NipSize
+    {
+      double theta0 = 0, peak = 0;
+    };
+    /// The last converged nip and the last one before it at another
+    /// theta0: how the pressure grows with theta0 between them.
+    NipSize last_nip, nip_before;
     /// Set by load or indentation control while it iterates.
     std::optional<ControlGoal> control_goal;
   };
