@@ -338,6 +338,7 @@ namespace rollnip
             scene = std::make_unique<Scene>(parameters, communicator);
             control =
               std::make_unique<NipControl>(scene->nip_solver(), parameters);
+            build_pilot(communicator);
           }
         catch (const std::exception &e)
           {
@@ -376,10 +377,11 @@ namespace rollnip
 
       /**
        * With the companion one level coarser, it goes first: solves the
-       * nip of @p target from its own nip before, with its own control
-       * converged in full, and hands it over to @p primary as that
-       * scene's last converged nip (carry_nip()), so that the finer mesh
-       * starts from the same nip, not from the one before; under load or
+       * nip of @p target from the pilot's nip of it one level coarser
+       * again (pilot_lead()), or without a pilot from its own nip before,
+       * with its own control converged in full, and hands it over to @p primary
+       * as that scene's last converged nip (carry_nip()), so that the finer
+       * mesh starts from the same nip, not from the one before; under load or
        * indentation control the primary's control also starts from its
        * theta0 and slope (returned). estimate() then takes these numbers.
        * At level 0 (the companion finer), or where its own solve fails, it
@@ -401,8 +403,9 @@ namespace rollnip
             // where it started (its nip before, on any number of
             // processes).
             control->allow_provisional(false);
-            NipRow c;
-            c.nonlinear = control->solve(target);
+            const Guess start = pilot_lead(target);
+            NipRow      c;
+            c.nonlinear = control->solve(target, start.theta0, start.slope);
             if (c.nonlinear.converged)
               {
                 fill_nip_values(*scene, c);
@@ -589,6 +592,83 @@ namespace rollnip
         return true;
       }
 
+      /// The pilot one level below a coarser companion at level 1 or
+      /// more, where its nip can be handed over (carry_nip(): one
+      /// process, a rigid counter surface); none where it cannot be built
+      /// (the companion then starts from its own nip before).
+      void
+      build_pilot(const MPI_Comm communicator)
+      {
+        const unsigned int companion_level = parameters.mesh.global_refinements;
+        if (companion_level == 0 || companion_level > level ||
+            Utilities::MPI::n_mpi_processes(communicator) != 1 ||
+            !dynamic_cast<InverseContact *>(&scene->nip_solver()))
+          return;
+        pilot_parameters = std::make_unique<const Parameters::AllParameters>(
+          companion_parameters(parameters));
+        try
+          {
+            pilot = std::make_unique<Scene>(*pilot_parameters, communicator);
+            pilot_control = std::make_unique<NipControl>(pilot->nip_solver(),
+                                                         *pilot_parameters);
+          }
+        catch (const std::exception &e)
+          {
+            if (is_local_error(e))
+              throw;
+            drop_pilot();
+          }
+      }
+
+      /**
+       * The nip of @p target on the pilot, handed to the companion as its
+       * last converged nip; under load or indentation control also its
+       * theta0 and slope, where the companion's control starts. A nip
+       * from the same nip one level coarser costs the companion two or
+       * three solves where one from its nip before costs three to five.
+       * Nothing (the companion's own start) where the pilot fails. Its
+       * provisional solves are allowed: the companion's own solves,
+       * converged in full, decide the answer.
+       */
+      Guess
+      pilot_lead(const double target)
+      {
+        if (!pilot_control)
+          return {};
+        try
+          {
+            const ContactResult r = pilot_control->solve(target);
+            if (!r.converged)
+              {
+                // A mesh too coarse for this nip is no quicker for the next
+                // one.
+                drop_pilot();
+                return {};
+              }
+            if (!carry_nip(*pilot, *scene) ||
+                parameters.contact.mode == Parameters::ContactMode::nip_angle)
+              return {};
+            return {r.theta0, pilot_control->local_slope(target)};
+          }
+        catch (const std::exception &error)
+          {
+            if (is_local_error(error))
+              throw;
+            drop_pilot();
+            return {};
+          }
+      }
+
+      /// Destroys the pilot's objects, its timer silenced.
+      void
+      drop_pilot()
+      {
+        pilot_control.reset();
+        if (pilot)
+          pilot->silence_timers();
+        pilot.reset();
+      }
+
       /// The primary's converged nip as this scene's last (carry_nip()).
       bool
       warm_start(Scene &primary)
@@ -601,6 +681,7 @@ namespace rollnip
       void
       release()
       {
+        drop_pilot();
         control.reset();
         if (scene)
           scene->silence_timers();
@@ -619,7 +700,13 @@ namespace rollnip
       } led;
       std::unique_ptr<Scene>      scene;
       std::unique_ptr<NipControl> control;
-      const RecordingSolver      *path = nullptr; ///< the run's, if given
+      /// One level below the companion, which lead() starts from its nip
+      /// (build_pilot()); the parameters outlive the scene that keeps a
+      /// reference to them.
+      std::unique_ptr<const Parameters::AllParameters> pilot_parameters;
+      std::unique_ptr<Scene>                           pilot;
+      std::unique_ptr<NipControl>                      pilot_control;
+      const RecordingSolver *path = nullptr; ///< the run's, if given
       /// How much the slopes of a number along the nip curve differ
       /// between two mesh levels, relative, at most (their discretisation
       /// error, below 1e-3 in P for Q2-P1 at level 0).

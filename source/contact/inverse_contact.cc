@@ -560,7 +560,8 @@ namespace rollnip
     if (result.converged)
       {
         const NipSize size{zone.theta0, result.peak_pressure};
-        if (std::abs(std::log(zone.theta0 / last_nip.theta0)) > 1e-3)
+        if (std::abs(std::log(zone.theta0 / last_nip.theta0)) >
+            IterationControls::min_growth_span)
           nip_before = last_nip;
         last_nip           = size;
         converged.state    = body.owned_solution();
@@ -575,10 +576,14 @@ namespace rollnip
   InverseContact::pressure_growth() const
   {
     const double span = std::log(last_nip.theta0 / nip_before.theta0);
-    if (!(nip_before.peak > 0 && last_nip.peak > 0 && std::abs(span) > 1e-3))
+    if (!(nip_before.peak > 0 && last_nip.peak > 0 &&
+          std::abs(span) > IterationControls::min_growth_span))
       return 1.;
     const double g = std::log(last_nip.peak / nip_before.peak) / span;
-    return std::isfinite(g) ? std::clamp(g, 0.5, 3.) : 1.;
+    return std::isfinite(g) ? std::clamp(g,
+                                         IterationControls::min_pressure_growth,
+                                         IterationControls::max_pressure_growth)
+                            : 1.;
   }
 
   void

@@ -215,10 +215,29 @@ namespace rollnip
   NipControl::local_slope(const double target) const
   {
     const std::vector<Point> near = nearest_first(target);
-    if (near.size() < 2 || near[0].theta == near[1].theta)
+    if (near.size() < 2)
       return 0;
-    const double slope =
-      std::log(near[0].q / near[1].q) / std::log(near[0].theta / near[1].theta);
+    // The last iterates of a target lie within the control tolerance of
+    // each other, where the conformity error of q is a good part of their
+    // difference; a provisional q is off by about 1 % of its miss.
+    const double min_spread = IterationControls::slope_spread_of_tolerance *
+                              parameters.contact.control_tolerance;
+    const Point *partner = &near[1];
+    for (std::size_t i = 1; i < near.size(); ++i)
+      {
+        const double spread = std::abs(std::log(near[i].q / near[0].q));
+        if (spread > IterationControls::max_slope_spread)
+          break;
+        if (!near[i].provisional && spread >= min_spread)
+          {
+            partner = &near[i];
+            break;
+          }
+      }
+    if (near[0].theta == partner->theta)
+      return 0;
+    const double slope = std::log(near[0].q / partner->q) /
+                         std::log(near[0].theta / partner->theta);
     return std::isfinite(slope) && slope > 0 ? slope : 0;
   }
 
@@ -274,9 +293,10 @@ namespace rollnip
     const double             default_slope =
       by_load ? IterationControls::default_slope_load
                           : IterationControls::default_slope_indentation;
-    double slope =
-      slope_hint > 0 && target == hint_target ? slope_hint : default_slope;
-    const bool two_points = near.size() > 1 && near[0].theta != near[1].theta;
+    const bool hinted     = slope_hint > 0 && target == hint_target;
+    double     slope      = hinted ? slope_hint : default_slope;
+    const bool two_points = near.size() > 1 && near[0].theta != near[1].theta &&
+                            !(hinted && n_at_target < 2);
     if (two_points)
       slope = std::log(near[0].q / near[1].q) /
               std::log(near[0].theta / near[1].theta);
@@ -306,6 +326,10 @@ namespace rollnip
   NipControl::predict(const double target) const
   {
     Assert(!converged.empty(), ExcInternalError());
+    // A slope given for this target beats a quadratic through the nips
+    // of earlier targets while one nip of it has converged.
+    if (slope_hint > 0 && target == hint_target && n_at_target < 2)
+      return secant_guess(target);
     const std::vector<Point> near = nearest_first(target);
     // The nearest nip, and up to two more whose q differ from those taken
     // by a good part of the distance to the target: the iterates of an
@@ -461,7 +485,9 @@ namespace rollnip
   }
 
   void
-  NipControl::remember(const double theta, const double q)
+  NipControl::remember(const double theta,
+                       const double q,
+                       const bool   provisional)
   {
     converged.insert(std::upper_bound(converged.begin(),
                                       converged.end(),
@@ -469,7 +495,7 @@ namespace rollnip
                                       [](const double t, const Point &p) {
                                         return t < p.theta;
                                       }),
-                     Point{theta, q});
+                     Point{theta, q, provisional});
   }
 
   std::string
@@ -504,6 +530,7 @@ namespace rollnip
                    : converged.empty() ? cold_guess(target)
                                        : predict(target);
     theta        = std::min(theta, theta_max);
+    n_at_target  = 0;
     if (guess > 0 && guess_slope > 0)
       {
         slope_hint     = guess_slope;
@@ -559,7 +586,8 @@ namespace rollnip
           }
         const double q = controlled(r);
         n_provisional += r.provisional;
-        remember(theta, q);
+        remember(theta, q, r.provisional);
+        ++n_at_target;
         pcout << "Outer iteration " << it << ": theta0 = " << std::fixed
               << std::setprecision(6) << theta * deg << " deg gives "
               << quantity() << " = " << q << unit() << " (target " << target

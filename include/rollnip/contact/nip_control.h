@@ -87,8 +87,10 @@ namespace rollnip
     double
     largest_converged_theta() const;
 
-    /// The slope d log q / d log theta0 of the secant through the two
-    /// converged nips nearest to @p target (in log q), 0 with fewer.
+    /// The slope d log q / d log theta0 of the secant from the converged
+    /// nip nearest to @p target (in log q) to the nearest fully converged
+    /// one far enough from it for the conformity error of q to stay small
+    /// beside their difference (else the next nearest), 0 with fewer.
     double
     local_slope(const double target) const;
 
@@ -101,8 +103,9 @@ namespace rollnip
   private:
     struct Point
     {
-      double theta; ///< [rad]
-      double q;     ///< P [N/mm] or u0 [mm]
+      double theta;       ///< [rad]
+      double q;           ///< P [N/mm] or u0 [mm]
+      bool   provisional; ///< stopped short of the curve
     };
 
     /// The converged nips, nearest to @p target (in log q) first.
@@ -179,7 +182,7 @@ namespace rollnip
 
     /// Adds the converged nip (@p theta, @p q), keeping the order by theta.
     void
-    remember(const double theta, const double q);
+    remember(const double theta, const double q, const bool provisional);
 
     /// Why a target needing theta0 above @p theta_max, the mesh's largest
     /// nip, is refused.
@@ -194,10 +197,14 @@ namespace rollnip
     unsigned int                     n_provisional       = 0;
     bool                             provisional_allowed = true;
     unsigned int                     n_coarse            = 0;
-    /// The slope of log q against log theta0 of the level-0 scene at the
-    /// cold target hint_target, 0 if none: the secant's slope while one
-    /// nip of that target has converged.
+    /// The slope of log q against log theta0 at hint_target, 0 if none:
+    /// the level-0 scene's at a cold target, or a coarser companion's
+    /// (solve()'s guess_slope). It is the secant's slope while one nip of
+    /// that target has converged: the chord to an earlier target's nip
+    /// would miss the local slope by its curvature over that span.
     double slope_hint = 0, hint_target = 0;
+    /// The converged nips of the target being solved.
+    unsigned int n_at_target = 0;
     /// The curvature of log theta0 against log q on the level-0 scene
     /// (local_curvature()), 0 if none: added to the secant while two nips
     /// of hint_target have converged, where the power law alone misses

@@ -56,6 +56,13 @@ namespace rollnip
     /// step by about as much; the iterate that meets the target is always
     /// converged in full.
     constexpr double provisional_miss = 10, provisional_fraction = 1e-2;
+    /// InverseContact::pressure_growth(): the growth d log(peak) /
+    /// d log theta0 of the contact pressure's peak between two converged
+    /// nips at least min_growth_span apart in log theta0 (nearer, their
+    /// conformity error is a good part of the difference), clamped to
+    /// [min_pressure_growth, max_pressure_growth] (Hertz: 1).
+    constexpr double min_growth_span = 1e-3, min_pressure_growth = 0.5,
+                     max_pressure_growth = 3.;
     /// A surface node within this relative distance of theta0 is the edge.
     constexpr double edge_slack = 1e-12;
 
@@ -68,6 +75,12 @@ namespace rollnip
     /// like theta0^2 (Hertz) to theta0^5 (thin layer), u0 like theta0^2;
     /// the bounds only catch a secant through two nearly equal points.
     constexpr double min_slope = 0.5, max_slope = 10.;
+    /// NipControl::local_slope() takes its second nip at least this many
+    /// times Contact/Control tolerance from the first in log q (where the
+    /// conformity error of q, a tenth of the tolerance, errs the slope by
+    /// 1e-3 at most), and at most max_slope_spread (beyond, the curve's
+    /// bend errs it by a few per cent).
+    constexpr double slope_spread_of_tolerance = 100, max_slope_spread = 0.05;
     /// The slope assumed while one nip has converged: between Hertz and
     /// the thin layer for P, the geometric overlap for u0.
     constexpr double default_slope_load = 3., default_slope_indentation = 2.;
